@@ -1,0 +1,11 @@
+# Every dependency comes from a Debian package (scripts/setup installs them).
+find_package(PkgConfig REQUIRED)
+find_package(Threads REQUIRED)
+find_package(glm REQUIRED)
+find_package(glfw3 3.3 REQUIRED)
+find_package(OpenGL REQUIRED COMPONENTS EGL)
+find_package(ZLIB REQUIRED)
+pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
+if(VOLSG_BUILD_TESTS)
+  find_package(doctest REQUIRED)
+endif()

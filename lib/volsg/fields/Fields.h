@@ -1,0 +1,231 @@
+#pragma once
+// The concrete field types of SCENE-FORMAT section 1: SF* single values and MF* lists.
+
+#include <cstdint>
+#include <initializer_list>
+#include <memory>
+#include <string_view>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <volsg/fields/Field.h>
+#include <volsg/fields/Values.h>
+
+namespace volsg {
+
+class Tokenizer;
+
+/// How one value type is read and written; one struct per Inventor value type.
+#define VOLSG_VALUE_TRAITS(Traits, Type, SFName, MFName)                                          \
+    struct Traits {                                                                                \
+        using Value = Type;                                                                        \
+        static constexpr const char* sfName = SFName;                                             \
+        static constexpr const char* mfName = MFName;                                             \
+        static Value read(Tokenizer& in);                                                          \
+        static void write(std::ostream& out, const Value& v);                                      \
+    };
+VOLSG_VALUE_TRAITS(FloatTraits, float, "SFFloat", "MFFloat")
+VOLSG_VALUE_TRAITS(Int32Traits, std::int32_t, "SFInt32", "MFInt32")
+VOLSG_VALUE_TRAITS(UInt32Traits, std::uint32_t, "SFUInt32", "MFUInt32")
+VOLSG_VALUE_TRAITS(BoolTraits, bool, "SFBool", "MFBool")
+VOLSG_VALUE_TRAITS(StringTraits, std::string, "SFString", "MFString")
+VOLSG_VALUE_TRAITS(Vec2fTraits, glm::vec2, "SFVec2f", "MFVec2f")
+VOLSG_VALUE_TRAITS(Vec3fTraits, glm::vec3, "SFVec3f", "MFVec3f")
+VOLSG_VALUE_TRAITS(Vec4fTraits, glm::vec4, "SFVec4f", "MFVec4f")
+VOLSG_VALUE_TRAITS(ColorTraits, glm::vec3, "SFColor", "MFColor")
+VOLSG_VALUE_TRAITS(RotationTraits, Rotation, "SFRotation", "MFRotation")
+VOLSG_VALUE_TRAITS(PlaneTraits, Plane, "SFPlane", "MFPlane")
+VOLSG_VALUE_TRAITS(MatrixTraits, glm::mat4, "SFMatrix", "MFMatrix")
+#undef VOLSG_VALUE_TRAITS
+
+/// A single value.
+template <class Traits> class SField final : public Field {
+public:
+    using Value = typename Traits::Value;
+    SField(Node* owner, const char* name, Value initial = Value{})
+        : Field(owner, name), value_(std::move(initial)) {}
+
+    const Value& getValue() const { return value_; }
+    const Value& operator()() const { return value_; }
+    void setValue(Value v) {
+        value_ = std::move(v);
+        changed();
+    }
+    SField& operator=(Value v) {
+        setValue(std::move(v));
+        return *this;
+    }
+
+    const char* typeName() const override { return Traits::sfName; }
+    void read(FieldInput& in) override;
+    void write(FieldOutput& out) const override;
+    bool equals(const Field& other) const override;
+    void copyFrom(const Field& other) override;
+
+private:
+    Value value_;
+};
+
+/// A list of values: `[ v1, v2 ]`, commas optional, or one value without brackets.
+template <class Traits> class MField final : public Field {
+public:
+    using Value = typename Traits::Value;
+    MField(Node* owner, const char* name, std::vector<Value> initial = {})
+        : Field(owner, name), values_(std::move(initial)) {}
+
+    const std::vector<Value>& getValues() const { return values_; }
+    const std::vector<Value>& operator()() const { return values_; }
+    std::size_t size() const { return values_.size(); }
+    bool empty() const { return values_.empty(); }
+    const Value& operator[](std::size_t i) const { return values_[i]; }
+    void setValues(std::vector<Value> v) {
+        values_ = std::move(v);
+        changed();
+    }
+    void set1Value(std::size_t i, Value v) {
+        if (i >= values_.size()) values_.resize(i + 1);
+        values_[i] = std::move(v);
+        changed();
+    }
+    MField& operator=(std::vector<Value> v) {
+        setValues(std::move(v));
+        return *this;
+    }
+
+    const char* typeName() const override { return Traits::mfName; }
+    void read(FieldInput& in) override;
+    void write(FieldOutput& out) const override;
+    bool equals(const Field& other) const override;
+    void copyFrom(const Field& other) override;
+
+private:
+    std::vector<Value> values_;
+};
+
+using SFFloat = SField<FloatTraits>;
+using SFInt32 = SField<Int32Traits>;
+using SFUInt32 = SField<UInt32Traits>;
+using SFBool = SField<BoolTraits>;
+using SFString = SField<StringTraits>;
+using SFVec2f = SField<Vec2fTraits>;
+using SFVec3f = SField<Vec3fTraits>;
+using SFVec4f = SField<Vec4fTraits>;
+using SFColor = SField<ColorTraits>;
+using SFRotation = SField<RotationTraits>;
+using SFPlane = SField<PlaneTraits>;
+using SFMatrix = SField<MatrixTraits>;
+using MFFloat = MField<FloatTraits>;
+using MFInt32 = MField<Int32Traits>;
+using MFUInt32 = MField<UInt32Traits>;
+using MFBool = MField<BoolTraits>;
+using MFString = MField<StringTraits>;
+using MFVec2f = MField<Vec2fTraits>;
+using MFVec3f = MField<Vec3fTraits>;
+using MFVec4f = MField<Vec4fTraits>;
+using MFColor = MField<ColorTraits>;
+using MFRotation = MField<RotationTraits>;
+using MFPlane = MField<PlaneTraits>;
+using MFMatrix = MField<MatrixTraits>;
+
+/// Names of an SFEnum or SFBitMask field's values, as written in files.
+struct EnumValues {
+    std::vector<std::pair<const char*, int>> entries;
+    EnumValues(std::initializer_list<std::pair<const char*, int>> e) : entries(e) {}
+    const char* nameOf(int value) const; ///< null if none
+    bool valueOf(std::string_view name, int& value) const;
+};
+
+/// One of a fixed set of named values (`renderMode DVR`).
+class SFEnum final : public Field {
+public:
+    SFEnum(Node* owner, const char* name, const EnumValues& names, int initial)
+        : Field(owner, name), names_(&names), value_(initial) {}
+    int getValue() const { return value_; }
+    int operator()() const { return value_; }
+    void setValue(int v) {
+        value_ = v;
+        changed();
+    }
+    SFEnum& operator=(int v) {
+        setValue(v);
+        return *this;
+    }
+    const EnumValues& names() const { return *names_; }
+
+    const char* typeName() const override { return "SFEnum"; }
+    void read(FieldInput& in) override;
+    void write(FieldOutput& out) const override;
+    bool equals(const Field& other) const override;
+    void copyFrom(const Field& other) override;
+
+private:
+    const EnumValues* names_;
+    int value_;
+};
+
+/// A set of named bits: `(A | B)` or a single name.
+class SFBitMask final : public Field {
+public:
+    SFBitMask(Node* owner, const char* name, const EnumValues& bits, int initial)
+        : Field(owner, name), bits_(&bits), value_(initial) {}
+    int getValue() const { return value_; }
+    int operator()() const { return value_; }
+    void setValue(int v) {
+        value_ = v;
+        changed();
+    }
+    const EnumValues& names() const { return *bits_; }
+
+    const char* typeName() const override { return "SFBitMask"; }
+    void read(FieldInput& in) override;
+    void write(FieldOutput& out) const override;
+    bool equals(const Field& other) const override;
+    void copyFrom(const Field& other) override;
+
+private:
+    const EnumValues* bits_;
+    int value_;
+};
+
+/// A node value (`Cube { }`, `USE name`, or `NULL`).
+class SFNode final : public Field {
+public:
+    SFNode(Node* owner, const char* name);
+    ~SFNode() override;
+    Node* getValue() const;
+    void setValue(ref_ptr<Node> n);
+
+    const char* typeName() const override { return "SFNode"; }
+    void read(FieldInput& in) override;
+    void write(FieldOutput& out) const override;
+    bool equals(const Field& other) const override;
+    void copyFrom(const Field& other) override;
+
+private:
+    ref_ptr<Node> value_;
+};
+
+/// A list of node values.
+class MFNode final : public Field {
+public:
+    MFNode(Node* owner, const char* name);
+    ~MFNode() override;
+    const std::vector<ref_ptr<Node>>& getValues() const { return values_; }
+    void setValues(std::vector<ref_ptr<Node>> v);
+
+    const char* typeName() const override { return "MFNode"; }
+    void read(FieldInput& in) override;
+    void write(FieldOutput& out) const override;
+    bool equals(const Field& other) const override;
+    void copyFrom(const Field& other) override;
+
+private:
+    std::vector<ref_ptr<Node>> values_;
+};
+
+/// Creates an empty field of a type named in a file (`fields [ SFFloat a ]`), for nodes the
+/// reader keeps as opaque; null for an unknown type name.
+std::unique_ptr<Field> createFieldOfType(std::string_view typeName, Node* owner, const char* name);
+
+} // namespace volsg

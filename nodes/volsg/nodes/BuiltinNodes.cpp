@@ -1,0 +1,45 @@
+// The registry of node types the reader knows by name. A new node type adds one line here.
+#include <volsg/core/NodeType.h>
+#include <volsg/nodes/Camera.h>
+#include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/Cone.h>
+#include <volsg/nodes/Coordinate3.h>
+#include <volsg/nodes/Cube.h>
+#include <volsg/nodes/Cylinder.h>
+#include <volsg/nodes/Group.h>
+#include <volsg/nodes/IndexedFaceSet.h>
+#include <volsg/nodes/IndexedLineSet.h>
+#include <volsg/nodes/Light.h>
+#include <volsg/nodes/Material.h>
+#include <volsg/nodes/MatrixTransform.h>
+#include <volsg/nodes/Normal.h>
+#include <volsg/nodes/Separator.h>
+#include <volsg/nodes/Sphere.h>
+#include <volsg/nodes/Switch.h>
+#include <volsg/nodes/Transform.h>
+
+namespace volsg {
+
+void registerBuiltinNodeTypes(NodeRegistry& r) {
+    r.add(Group::classType());
+    r.add(Separator::classType());
+    r.add(Switch::classType());
+    r.add(Transform::classType());
+    r.add(MatrixTransform::classType());
+    r.add(Material::classType());
+    r.add(PerspectiveCamera::classType());
+    r.add(OrthographicCamera::classType());
+    r.add(DirectionalLight::classType());
+    r.add(PointLight::classType());
+    r.add(Cube::classType());
+    r.add(Sphere::classType());
+    r.add(Cone::classType());
+    r.add(Cylinder::classType());
+    r.add(Coordinate3::classType());
+    r.add(Normal::classType());
+    r.add(IndexedFaceSet::classType());
+    r.add(IndexedLineSet::classType());
+    r.add(ClipPlane::classType());
+}
+
+} // namespace volsg

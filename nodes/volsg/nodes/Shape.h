@@ -1,0 +1,38 @@
+#pragma once
+// Base of geometry nodes: a shape only says how to build its Mesh; drawing, bounding boxes and
+// picking are done once for all shapes from that mesh (lib/volsg/render/ShapeRenderer).
+
+#include <cstdint>
+
+#include <volsg/core/Node.h>
+#include <volsg/geometry/Mesh.h>
+
+namespace volsg {
+
+class State;
+
+class Shape : public Inherit<Node, Shape> {
+public:
+    static constexpr const char* typeName = "Shape";
+
+    /// The mesh for the current state, rebuilt only when meshKey() changes.
+    const Mesh& mesh(const State& state) const;
+
+    void render(RenderAction& action) override;
+    void getBoundingBox(BoundingBoxAction& action) override;
+    void pick(PickAction& action) override;
+
+protected:
+    ~Shape() override = default;
+    virtual void buildMesh(const State& state, Mesh& out) const = 0;
+    /// Identifies everything the mesh depends on; the node's version by default. Shapes that
+    /// read state (IndexedFaceSet reads Coordinate3 and Normal) combine their versions.
+    virtual std::uint64_t meshKey(const State& state) const;
+
+private:
+    mutable Mesh mesh_;
+    mutable std::uint64_t meshKey_ = 0;
+    mutable bool meshValid_ = false;
+};
+
+} // namespace volsg
