@@ -1,0 +1,27 @@
+#pragma once
+// Computes the world-space bounding box of everything a render would draw.
+
+#include <volsg/actions/Action.h>
+#include <volsg/math/Box3.h>
+
+namespace volsg {
+
+class BoundingBoxAction : public Action {
+public:
+    /// The box so far, in world coordinates.
+    const Box3& boundingBox() const { return box_; }
+    /// Adds a box given in the current node's local coordinates (uses the state's model matrix).
+    void extendByLocal(const Box3& local);
+
+protected:
+    void beginTraversal(Node& root) override;
+    void dispatch(Node& node) override;
+
+private:
+    Box3 box_;
+};
+
+/// The world bounding box of a graph (empty if it draws nothing).
+Box3 computeBoundingBox(Node& root);
+
+} // namespace volsg
