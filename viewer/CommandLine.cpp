@@ -1,0 +1,73 @@
+#include "CommandLine.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+#include <volsg/core/Error.h>
+
+namespace volsg::cli {
+
+Arguments::Arguments(int argc, char** argv) : args_(argv + 1, argv + argc) {}
+
+std::string Arguments::take() { return args_[next_++]; }
+
+std::string Arguments::value(std::string_view option) {
+    if (empty()) throw Error("option " + std::string(option) + " needs a value");
+    return take();
+}
+
+int Arguments::intValue(std::string_view option, int min, int max) {
+    const std::string text = value(option);
+    int v = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || end != text.data() + text.size() || v < min || v > max)
+        throw Error("option " + std::string(option) + " expects a whole number from " +
+                    std::to_string(min) + " to " + std::to_string(max) + ", not '" + text + "'");
+    return v;
+}
+
+glm::ivec2 parseSize(const std::string& text) {
+    const auto x = text.find('x');
+    int w = 0, h = 0;
+    bool ok = x != std::string::npos;
+    if (ok) {
+        auto r1 = std::from_chars(text.data(), text.data() + x, w);
+        auto r2 = std::from_chars(text.data() + x + 1, text.data() + text.size(), h);
+        ok = r1.ec == std::errc() && r1.ptr == text.data() + x && r2.ec == std::errc() &&
+             r2.ptr == text.data() + text.size();
+    }
+    if (!ok || w < 1 || h < 1 || w > 16384 || h > 16384)
+        throw Error("--size expects WxH with 1 <= W, H <= 16384, not '" + text + "'");
+    return {w, h};
+}
+
+glm::vec3 parseColor(const std::string& text) {
+    glm::vec3 c(0.0f);
+    std::size_t start = 0;
+    for (int i = 0; i < 3; ++i) {
+        const std::size_t end = i < 2 ? text.find(',', start) : text.size();
+        if (end == std::string::npos) throw Error("--background expects R,G,B, not '" + text + "'");
+        const std::string part = text.substr(start, end - start);
+        char* stop = nullptr;
+        const double v = std::strtod(part.c_str(), &stop);
+        if (part.empty() || *stop != '\0' || !std::isfinite(v) || v < 0.0 || v > 1.0)
+            throw Error("--background expects three numbers in [0,1] as R,G,B, not '" + text + "'");
+        c[i] = float(v);
+        start = end + 1;
+    }
+    return c;
+}
+
+std::string extensionOf(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+    std::string ext = path.substr(dot);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char ch) { return char(std::tolower(ch)); });
+    return ext;
+}
+
+} // namespace volsg::cli
