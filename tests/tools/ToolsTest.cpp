@@ -1,6 +1,10 @@
 // The command-line tools and the embedding example, run as a user runs them.
 #include <doctest/doctest.h>
 
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
