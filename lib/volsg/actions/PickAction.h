@@ -1,6 +1,7 @@
 #pragma once
 // Casts a ray through a pixel and finds the first shape it hits.
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -12,29 +13,43 @@ namespace volsg {
 class Camera;
 
 /// What a pick found: the point and normal in world coordinates, the distance along the ray,
-/// the path to the shape, and which primitive (triangle or segment) of its mesh.
+/// the path to the shape, and which primitive (triangle) of its mesh.
 struct PickedPoint {
     glm::dvec3 point{0.0};
+    /// The mesh's normal there (interpolated vertex normals, else the face normal), unit
+    /// length, in world coordinates. Not flipped towards the viewer: a back face hit reports
+    /// its outward normal.
     glm::dvec3 normal{0.0};
-    double distance = 0.0; ///< along the world ray, in world units
+    double distance = 0.0; ///< along the world ray from its origin, in world units
     std::vector<Node*> path;
     std::size_t primitiveIndex = 0;
 };
 
+/// Inventor's SoRayPickAction, nearest hit only. Shapes with triangle meshes are pickable;
+/// line sets are not (a pick radius would have to be in pixels, which the ray does not know).
+///
+/// For a pixel, the ray starts at the camera (the eye point of a perspective camera, the
+/// camera's plane for an orthographic one) with a unit direction, so `distance` is the
+/// distance from the camera; hits nearer than the near plane or beyond the far plane do not
+/// count, as they would not be drawn.
 class PickAction : public Action {
 public:
-    /// The ray through pixel (x, y) (origin top-left, pixel centres at +0.5) of a viewport of
-    /// width x height seen by `camera` with `cameraModel` above it. Without a camera, the
-    /// scene's own (findOrMakeCamera) is used.
+    /// The ray through the centre of pixel (x, y) of a viewport of width x height: origin
+    /// top-left, y down, pixel (i, j)'s centre at window position (i + 0.5, j + 0.5), so
+    /// integer x, y pick whole pixels as the renderer draws them. Seen by the camera given to
+    /// setCamera, or else the scene's own (findOrMakeCamera, at apply time).
     void setPixel(double x, double y, int width, int height);
     void setCamera(ref_ptr<Camera> camera, const glm::dmat4& cameraModel = glm::dmat4(1.0));
-    /// A world-space ray directly (for manipulators and tests).
-    void setRay(const Ray& worldRay, double nearDistance = 0.0);
+    /// A world-space ray directly (for manipulators and tests). The direction is normalized;
+    /// hits count between nearDistance and farDistance along it.
+    void setRay(const Ray& worldRay, double nearDistance = 0.0,
+                double farDistance = std::numeric_limits<double>::infinity());
 
-    /// Called by shapes: a hit at parameter t along the current local ray.
+    /// The ray being cast, in world coordinates, unit direction.
     const Ray& worldRay() const { return worldRay_; }
-    /// Shapes report hits in local coordinates; the action keeps the nearest and passes
-    /// clip planes in scope (a hit on the removed side of a ClipPlane does not count).
+    /// Shapes report hits in the current node's local coordinates; the action converts them to
+    /// world, keeps the nearest, and drops hits outside [near, far] or on the removed side of
+    /// any ClipPlane in scope.
     void addLocalHit(const glm::dvec3& localPoint, const glm::dvec3& localNormal,
                      std::size_t primitiveIndex);
 
@@ -52,6 +67,8 @@ private:
     glm::dmat4 cameraModel_{1.0};
     Ray worldRay_;
     double near_ = 0.0;
+    double far_ = std::numeric_limits<double>::infinity();
+    bool rayValid_ = true;
     std::optional<PickedPoint> picked_;
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // IndexedFaceSet: polygons from Coordinate3 points, each index list ended by -1; convex
 // polygons are fanned; normals from the Normal node in scope (normalIndex, else coordIndex
-// order) or computed per face.
+// order) or computed per face (rules in volsg/geometry/IndexedMeshes.h). A polygon with an
+// out-of-range index is skipped silently, never a crash or an error.
 #include <volsg/fields/Fields.h>
 #include <volsg/nodes/Shape.h>
 

@@ -1,5 +1,6 @@
 #pragma once
-// IndexedLineSet: polylines from Coordinate3 points, each index list ended by -1. Unlit.
+// IndexedLineSet: polylines from Coordinate3 points, each index list ended by -1. Unlit, not
+// pickable. A polyline with an out-of-range index is skipped silently.
 #include <volsg/fields/Fields.h>
 #include <volsg/nodes/Shape.h>
 

@@ -1,0 +1,170 @@
+#include <volsg/geometry/PrimitiveMeshes.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+namespace volsg {
+
+namespace {
+
+std::uint32_t addVertex(Mesh& m, const glm::dvec3& p, const glm::dvec3& n) {
+    m.positions.emplace_back(p);
+    m.normals.emplace_back(n);
+    return static_cast<std::uint32_t>(m.positions.size() - 1);
+}
+
+void addTriangle(Mesh& m, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    m.indices.insert(m.indices.end(), {a, b, c});
+}
+
+/// Unit directions around +Y: index j at angle 2*pi*j/slices from +Z towards +X. The last
+/// entry repeats the first exactly, so rings close without a crack.
+std::vector<glm::dvec3> ringDirections(int slices) {
+    std::vector<glm::dvec3> dirs(static_cast<std::size_t>(slices) + 1);
+    for (int j = 0; j < slices; ++j) {
+        const double phi = 2.0 * std::numbers::pi * j / slices;
+        dirs[static_cast<std::size_t>(j)] = {std::sin(phi), 0.0, std::cos(phi)};
+    }
+    dirs.back() = dirs.front();
+    return dirs;
+}
+
+/// A flat disk of the ring at height y, facing +Y when `up`, else -Y.
+void addDisk(Mesh& m, const std::vector<glm::dvec3>& dirs, double radius, double y, bool up) {
+    const glm::dvec3 normal(0.0, up ? 1.0 : -1.0, 0.0);
+    const std::uint32_t centre = addVertex(m, {0.0, y, 0.0}, normal);
+    const std::uint32_t first = static_cast<std::uint32_t>(m.positions.size());
+    for (const auto& d : dirs)
+        addVertex(m, radius * d + glm::dvec3(0.0, y, 0.0), normal);
+    const std::uint32_t slices = static_cast<std::uint32_t>(dirs.size() - 1);
+    for (std::uint32_t j = 0; j < slices; ++j) {
+        // Ring order turns from +Z towards +X: counter-clockwise seen from +Y.
+        if (up)
+            addTriangle(m, centre, first + j, first + j + 1);
+        else
+            addTriangle(m, centre, first + j + 1, first + j);
+    }
+}
+
+void clear(Mesh& m) {
+    m = Mesh{};
+    m.primitive = Mesh::Primitive::Triangles;
+}
+
+} // namespace
+
+void buildBoxMesh(const glm::vec3& size, Mesh& out) {
+    clear(out);
+    const glm::dvec3 half = glm::abs(glm::dvec3(size)) * 0.5;
+    // Each face: outward normal n and in-plane axes u, v with u x v = n, so the corners
+    // -u-v, +u-v, +u+v, -u+v run counter-clockwise seen from outside.
+    struct Face {
+        glm::dvec3 n, u, v;
+    };
+    static constexpr double o = 0.0, l = 1.0;
+    const Face faces[6] = {
+        {{l, o, o}, {o, o, -l}, {o, l, o}}, {{-l, o, o}, {o, o, l}, {o, l, o}},
+        {{o, l, o}, {l, o, o}, {o, o, -l}}, {{o, -l, o}, {l, o, o}, {o, o, l}},
+        {{o, o, l}, {l, o, o}, {o, l, o}},  {{o, o, -l}, {-l, o, o}, {o, l, o}},
+    };
+    out.positions.reserve(24);
+    out.normals.reserve(24);
+    out.indices.reserve(36);
+    for (const Face& f : faces) {
+        const std::uint32_t base = static_cast<std::uint32_t>(out.positions.size());
+        const double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
+        for (int k = 0; k < 4; ++k)
+            addVertex(out, (f.n + su[k] * f.u + sv[k] * f.v) * half, f.n);
+        addTriangle(out, base, base + 1, base + 2);
+        addTriangle(out, base, base + 2, base + 3);
+    }
+}
+
+void buildSphereMesh(float radius, int slices, int stacks, Mesh& out) {
+    clear(out);
+    slices = std::max(slices, 3);
+    stacks = std::max(stacks, 2);
+    const double r = std::abs(double(radius));
+    const std::vector<glm::dvec3> dirs = ringDirections(slices);
+    const std::uint32_t rowSize = static_cast<std::uint32_t>(slices) + 1;
+    for (int i = 0; i <= stacks; ++i) {
+        const double theta = std::numbers::pi * i / stacks;
+        // Exact poles and equator, so tests can rely on them.
+        const double y = i == 0            ? 1.0
+                         : i == stacks     ? -1.0
+                         : 2 * i == stacks ? 0.0
+                                           : std::cos(theta);
+        const double s = (i == 0 || i == stacks) ? 0.0 : 2 * i == stacks ? 1.0 : std::sin(theta);
+        for (const auto& d : dirs) {
+            const glm::dvec3 n(s * d.x, y, s * d.z);
+            addVertex(out, r * n, n);
+        }
+    }
+    for (int i = 0; i < stacks; ++i) {
+        for (int j = 0; j < slices; ++j) {
+            const std::uint32_t a = static_cast<std::uint32_t>(i) * rowSize + j; // upper left
+            const std::uint32_t d = a + 1;                                       // upper right
+            const std::uint32_t b = a + rowSize;                                 // lower left
+            const std::uint32_t c = b + 1;                                       // lower right
+            // At the poles one triangle of the quad would have zero area: leave it out.
+            if (i != 0) addTriangle(out, a, b, d);
+            if (i != stacks - 1) addTriangle(out, d, b, c);
+        }
+    }
+}
+
+void buildConeMesh(float bottomRadius, float height, bool sides, bool bottom, int slices,
+                   Mesh& out) {
+    clear(out);
+    slices = std::max(slices, 3);
+    const double r = std::abs(double(bottomRadius)), h = std::abs(double(height)), y0 = -0.5 * h,
+                 y1 = 0.5 * h;
+    const std::vector<glm::dvec3> dirs = ringDirections(slices);
+    if (sides) {
+        // The side's outward normal at angle phi is proportional to (h * radial, r).
+        auto sideNormal = [&](const glm::dvec3& radial) {
+            const glm::dvec3 n = h * radial + glm::dvec3(0.0, r, 0.0);
+            const double len = glm::length(n);
+            return len > 0.0 ? n / len : glm::dvec3(0.0, 1.0, 0.0);
+        };
+        const std::uint32_t first = static_cast<std::uint32_t>(out.positions.size());
+        for (const auto& d : dirs)
+            addVertex(out, r * d + glm::dvec3(0.0, y0, 0.0), sideNormal(d));
+        for (int j = 0; j < slices; ++j) {
+            const double mid = 2.0 * std::numbers::pi * (j + 0.5) / slices;
+            const glm::dvec3 midDir(std::sin(mid), 0.0, std::cos(mid));
+            const std::uint32_t apex = addVertex(out, {0.0, y1, 0.0}, sideNormal(midDir));
+            const std::uint32_t b = first + static_cast<std::uint32_t>(j);
+            addTriangle(out, b, b + 1, apex);
+        }
+    }
+    if (bottom) addDisk(out, dirs, r, y0, false);
+}
+
+void buildCylinderMesh(float radius, float height, bool sides, bool top, bool bottom, int slices,
+                       Mesh& out) {
+    clear(out);
+    slices = std::max(slices, 3);
+    const double r = std::abs(double(radius)), h = std::abs(double(height));
+    const double y0 = -0.5 * h, y1 = 0.5 * h;
+    const std::vector<glm::dvec3> dirs = ringDirections(slices);
+    if (sides) {
+        const std::uint32_t lower = static_cast<std::uint32_t>(out.positions.size());
+        for (const auto& d : dirs)
+            addVertex(out, r * d + glm::dvec3(0.0, y0, 0.0), d);
+        const std::uint32_t upper = static_cast<std::uint32_t>(out.positions.size());
+        for (const auto& d : dirs)
+            addVertex(out, r * d + glm::dvec3(0.0, y1, 0.0), d);
+        for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(slices); ++j) {
+            addTriangle(out, lower + j, lower + j + 1, upper + j + 1);
+            addTriangle(out, lower + j, upper + j + 1, upper + j);
+        }
+    }
+    if (top) addDisk(out, dirs, r, y1, true);
+    if (bottom) addDisk(out, dirs, r, y0, false);
+}
+
+} // namespace volsg

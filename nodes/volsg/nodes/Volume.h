@@ -1,0 +1,33 @@
+#pragma once
+// Volume: renders the VolumeData in scope by slicing a 3D texture back to front (the seed's
+// Inventor Volume node), with the TransferFunctions, ClipPlanes and BoxClip in scope.
+#include <volsg/core/Node.h>
+#include <volsg/fields/Fields.h>
+
+namespace volsg {
+
+class Volume : public Inherit<Node, Volume> {
+public:
+    static constexpr const char* typeName = "Volume";
+    enum RenderMode { DVR, MIP, MINIP, AVERAGE };
+    enum Interpolation { LINEAR, NEAREST };
+    static const EnumValues renderModeNames, interpolationNames;
+
+    SFEnum renderMode{this, "renderMode", renderModeNames, DVR};
+    SFInt32 numPlanes{this, "numPlanes", 0};               ///< 0: >= 2 per voxel along the view
+    SFInt32 interactivePlanes{this, "interactivePlanes", 0}; ///< 0: numPlanes / 4
+    SFEnum interpolation{this, "interpolation", interpolationNames, LINEAR};
+    SFBool preIntegrated{this, "preIntegrated", false};
+    SFBool lighting{this, "lighting", false};
+    /// (t, m): extinction multiplier over view depth, t = 0 nearest, 1 farthest box point.
+    MFVec2f planeOpacity{this, "planeOpacity", {glm::vec2(0, 1), glm::vec2(1, 1)}};
+    SFUInt32 textureBudget{this, "textureBudget", 0u}; ///< bytes; 0 = the driver's limit
+
+    void render(RenderAction& action) override;
+    void getBoundingBox(BoundingBoxAction& action) override;
+
+protected:
+    ~Volume() override = default;
+};
+
+} // namespace volsg
