@@ -19,6 +19,7 @@ class Field;
 class RenderAction;
 class BoundingBoxAction;
 class PickAction;
+struct ReadContext;
 
 /// A scene-graph node. Nodes hold fields and say what they do for each action; the heavy
 /// work lives in lib/ engines. Construct with `T::create()`, hold with `ref_ptr`.
@@ -50,6 +51,12 @@ public:
     const std::vector<ref_ptr<Node>>* children() const {
         return const_cast<Node*>(this)->children();
     }
+
+    /// Called by the scene reader once the node's fields and children are read. Nodes that
+    /// name files (VolumeData, GltfModel) keep `context.directory` (or resolve their names
+    /// with `context.resolve()`, io/ReadContext.h) so relative names resolve against the
+    /// scene file's folder.
+    virtual void readDone(const ReadContext& /*context*/) {}
 
     // What the node does in each action. The specific hooks default to doAction(), which
     // is where state-changing nodes (Transform, Material, ...) and groups act once for all.

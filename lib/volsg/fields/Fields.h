@@ -78,7 +78,10 @@ public:
     const std::vector<Value>& operator()() const { return values_; }
     std::size_t size() const { return values_.size(); }
     bool empty() const { return values_.empty(); }
-    const Value& operator[](std::size_t i) const { return values_[i]; }
+    /// `const Value&`, except `bool` for MFBool (std::vector<bool> has no references).
+    typename std::vector<Value>::const_reference operator[](std::size_t i) const {
+        return values_[i];
+    }
     void setValues(std::vector<Value> v) {
         values_ = std::move(v);
         changed();
