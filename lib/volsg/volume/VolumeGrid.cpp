@@ -1,0 +1,183 @@
+#include <volsg/volume/VolumeGrid.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+#include <volsg/core/Error.h>
+
+namespace volsg {
+
+const char* voxelTypeName(VoxelType type) {
+    switch (type) {
+    case VoxelType::UByte:
+        return "UBYTE";
+    case VoxelType::UShort:
+        return "USHORT";
+    case VoxelType::Short:
+        return "SHORT";
+    case VoxelType::Float:
+        return "FLOAT";
+    }
+    return "?";
+}
+
+std::size_t voxelTypeSize(VoxelType type) {
+    switch (type) {
+    case VoxelType::UByte:
+        return 1;
+    case VoxelType::UShort:
+        return 2;
+    case VoxelType::Short:
+        return 2;
+    case VoxelType::Float:
+        return 4;
+    }
+    return 0;
+}
+
+namespace {
+
+void checkSpacing(const glm::dvec3& s) {
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(s[a]) || !(s[a] > 0.0))
+            throw Error("volume spacing must be finite and > 0, got " + std::to_string(s.x) + " " +
+                        std::to_string(s.y) + " " + std::to_string(s.z));
+}
+
+std::string dimensionsText(glm::ivec3 d) {
+    return std::to_string(d.x) + " x " + std::to_string(d.y) + " x " + std::to_string(d.z);
+}
+
+// Round to nearest and saturate: what a file writer would store for `v`.
+template <class T> T saturate(double v) {
+    if (std::isnan(v)) throw Error("NaN cannot be stored in an integer voxel");
+    const double lo = double(std::numeric_limits<T>::min());
+    const double hi = double(std::numeric_limits<T>::max());
+    return T(std::clamp(std::nearbyint(v), lo, hi));
+}
+
+} // namespace
+
+std::uint64_t VolumeGrid::checkedByteSize(glm::ivec3 d, VoxelType type, std::uint64_t byteLimit) {
+    if (d.x < 1 || d.y < 1 || d.z < 1)
+        throw Error("volume dimensions must be >= 1 each, got " + dimensionsText(d));
+    // Multiply step by step, checking each product against the limit, so nothing overflows.
+    const std::uint64_t size = voxelTypeSize(type);
+    std::uint64_t bytes = size;
+    for (int a = 0; a < 3; ++a) {
+        const std::uint64_t n = std::uint64_t(d[a]);
+        if (bytes > byteLimit / n)
+            throw Error("volume of " + dimensionsText(d) + " " + voxelTypeName(type) +
+                        " voxels exceeds the allocation limit of " + std::to_string(byteLimit) +
+                        " bytes");
+        bytes *= n;
+    }
+    if (bytes > std::uint64_t(std::numeric_limits<std::size_t>::max()))
+        throw Error("volume of " + dimensionsText(d) + " does not fit in memory addresses");
+    return bytes;
+}
+
+ref_ptr<VolumeGrid> VolumeGrid::create(glm::ivec3 dimensions, VoxelType type, glm::dvec3 spacing,
+                                       std::uint64_t byteLimit) {
+    checkSpacing(spacing);
+    const std::uint64_t bytes = checkedByteSize(dimensions, type, byteLimit);
+    return ref_ptr<VolumeGrid>(
+        new VolumeGrid(dimensions, type, spacing, std::size_t(bytes / voxelTypeSize(type))));
+}
+
+VolumeGrid::VolumeGrid(glm::ivec3 dimensions, VoxelType type, glm::dvec3 spacing, std::size_t count)
+    : type_(type), dimensions_(dimensions), spacing_(spacing), voxelCount_(count) {
+    switch (type) {
+    case VoxelType::UByte:
+        storage_ = std::vector<std::uint8_t>(count);
+        break;
+    case VoxelType::UShort:
+        storage_ = std::vector<std::uint16_t>(count);
+        break;
+    case VoxelType::Short:
+        storage_ = std::vector<std::int16_t>(count);
+        break;
+    case VoxelType::Float:
+        storage_ = std::vector<float>(count);
+        break;
+    }
+}
+
+void VolumeGrid::setSpacing(glm::dvec3 spacing) {
+    checkSpacing(spacing);
+    spacing_ = spacing;
+}
+
+double VolumeGrid::smallestSpacing() const {
+    return std::min({spacing_.x, spacing_.y, spacing_.z});
+}
+
+glm::dvec3 VolumeGrid::voxelCenter(int i, int j, int k) const {
+    return -0.5 * extent() + (glm::dvec3(i, j, k) + 0.5) * spacing_;
+}
+
+double VolumeGrid::value(std::size_t index) const {
+    return std::visit([index](const auto& v) { return double(v[index]); }, storage_);
+}
+
+void VolumeGrid::setValue(std::size_t index, double v) {
+    std::visit(
+        [index, v](auto& data) {
+            using T = typename std::decay_t<decltype(data)>::value_type;
+            if constexpr (std::is_same_v<T, float>)
+                data[index] = float(v);
+            else
+                data[index] = saturate<T>(v);
+        },
+        storage_);
+}
+
+std::span<std::byte> VolumeGrid::bytes() {
+    return std::visit([](auto& v) { return std::as_writable_bytes(std::span(v.data(), v.size())); },
+                      storage_);
+}
+
+std::span<const std::byte> VolumeGrid::bytes() const {
+    return std::visit([](const auto& v) { return std::as_bytes(std::span(v.data(), v.size())); },
+                      storage_);
+}
+
+void VolumeGrid::throwTypeMismatch() const {
+    throw Error(std::string("volume data accessed with the wrong element type (the grid holds ") +
+                voxelTypeName(type_) + ")");
+}
+
+std::pair<double, double> VolumeGrid::minMax() const {
+    return std::visit(
+        [](const auto& data) {
+            double lo = std::numeric_limits<double>::infinity();
+            double hi = -lo;
+            for (const auto x : data) {
+                const double d = double(x);
+                if (!std::isfinite(d)) continue;
+                lo = std::min(lo, d);
+                hi = std::max(hi, d);
+            }
+            return lo <= hi ? std::pair(lo, hi) : std::pair(0.0, 0.0);
+        },
+        storage_);
+}
+
+std::pair<double, double> VolumeGrid::naturalRange() const {
+    switch (type_) {
+    case VoxelType::UByte:
+        return {0.0, 255.0};
+    case VoxelType::UShort:
+        return {0.0, 65535.0};
+    case VoxelType::Short:
+        return {-32768.0, 32767.0};
+    case VoxelType::Float:
+        return minMax();
+    }
+    return {0.0, 0.0};
+}
+
+} // namespace volsg
