@@ -16,7 +16,9 @@ struct Image {
     Image() = default;
     Image(int w, int h, glm::vec4 fill = glm::vec4(0.0f))
         : width(w), height(h), pixels(std::size_t(w) * std::size_t(h), fill) {}
-    glm::vec4& at(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    glm::vec4& at(int x, int y) {
+        return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    }
     const glm::vec4& at(int x, int y) const {
         return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];
     }

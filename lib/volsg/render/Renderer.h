@@ -2,27 +2,47 @@
 // Draws a scene graph into the current GL context: passes for opaque geometry, volumes and
 // transparent geometry, into a floating-point target, read back as an Image.
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <glm/glm.hpp>
 
 #include <volsg/core/Node.h>
 #include <volsg/image/Image.h>
+#include <volsg/nodes/Camera.h> // RenderOptions holds a ref_ptr<Camera>
 
 namespace volsg {
-
-class Camera;
 
 struct RenderOptions {
     int width = 512;
     int height = 512;
     glm::vec3 background{0.0f};
-    bool interactive = false;  ///< the user is moving the view: volumes use their fast settings
-    ref_ptr<Camera> camera;    ///< overrides the scene's camera when set (model matrix = identity)
+    bool interactive = false; ///< the user is moving the view: volumes use their fast settings
+    ref_ptr<Camera> camera;   ///< overrides the scene's camera when set (model matrix = identity)
+    bool opaqueOnly = false;  ///< only the Opaque pass: no volumes, no transparent shapes
+};
+
+/// What a Renderer has done, for tests and the benchmark: a frame where nothing changed
+/// uploads no mesh and builds no program.
+struct RenderStats {
+    std::uint64_t frames = 0;
+    std::uint64_t meshUploads = 0;   ///< meshes sent to the GPU since the Renderer was made
+    std::uint64_t programBuilds = 0; ///< shader programs compiled and linked since then
+    std::size_t cachedEntries = 0;   ///< per-node GPU caches alive after the last frame
+    std::size_t shapeDraws = 0;      ///< shape draw calls in the last frame
 };
 
 /// Holds the GL resources (programs, meshes, targets) of one context across frames. Create
-/// and use it with that context current.
+/// and use it with that context current, and destroy it before the context.
+///
+/// A frame: the camera (RenderOptions::camera, else findOrMakeCamera), a clear to the
+/// background (alpha 1), then the passes of RenderPass (opaque shapes, volumes, transparent
+/// shapes back to front) into a float RGBA target. Lighting follows Inventor: the lights in
+/// scope of each shape, plus 0.2 white ambient; **a scene with no light on at all is lit by a
+/// headlight**, a directional light of intensity 1 along the view direction, as Inventor's
+/// viewers do. Values are linear (no gamma). GL errors during a frame throw Error.
 class Renderer {
 public:
     Renderer();
@@ -35,6 +55,13 @@ public:
     /// Renders into the framebuffer bound now (a window's back buffer), same image.
     void renderToBoundFramebuffer(Node& root, const RenderOptions& options);
 
+    /// The depth buffer of the last frame in window coordinates ([0,1], 1 where nothing was
+    /// drawn), width*height values with row 0 at the top, like the Image. The context must
+    /// still be current. Empty before the first frame.
+    std::vector<float> readWindowDepth() const;
+
+    const RenderStats& stats() const;
+
     struct Impl;
 
 private:
@@ -42,8 +69,8 @@ private:
 };
 
 /// The camera a render of this scene uses: the first Camera in traversal order with the model
-/// matrix above it, or, without one, a PerspectiveCamera that views the whole bounding box from
-/// +Z (model matrix identity).
+/// matrix above it, or, without one, a new PerspectiveCamera in its default orientation that
+/// views the whole bounding box from +Z (viewAll; model matrix identity).
 struct SceneCamera {
     ref_ptr<Camera> camera;
     glm::dmat4 model{1.0};

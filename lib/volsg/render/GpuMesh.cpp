@@ -1,0 +1,57 @@
+#include <volsg/core/Error.h>
+#include <volsg/render/GpuMesh.h>
+
+#include <algorithm>
+#include <string>
+
+namespace volsg {
+
+void GpuMesh::upload(const Mesh& mesh) {
+    const std::size_t vertexCount = mesh.positions.size();
+    for (std::uint32_t i : mesh.indices)
+        if (i >= vertexCount)
+            throw Error("mesh index " + std::to_string(i) + " is beyond its " +
+                        std::to_string(vertexCount) + " positions");
+
+    const bool triangles = mesh.primitive == Mesh::Primitive::Triangles;
+    mode = triangles ? GL_TRIANGLES : GL_LINES;
+    const std::size_t perPrimitive = triangles ? 3 : 2;
+    // A trailing partial primitive would be ignored by GL anyway; leave it out explicitly.
+    indexCount = GLsizei(mesh.indices.size() - mesh.indices.size() % perPrimitive);
+    hasNormals = triangles && !mesh.normals.empty() && mesh.normals.size() == vertexCount;
+    hasColors = !mesh.colors.empty() && mesh.colors.size() == vertexCount;
+    hasTranslucentColors = hasColors && std::any_of(mesh.colors.begin(), mesh.colors.end(),
+                                                    [](const glm::vec4& c) { return c.a < 1.0f; });
+    bounds = mesh.bounds();
+
+    if (!vertexArray) {
+        vertexArray = VertexArray::create();
+        positions = Buffer(GL_ARRAY_BUFFER);
+        normals = Buffer(GL_ARRAY_BUFFER);
+        colors = Buffer(GL_ARRAY_BUFFER);
+        indices = Buffer(GL_ELEMENT_ARRAY_BUFFER);
+    }
+    vertexArray.bind();
+    positions.setData(mesh.positions);
+    vertexArray.setAttribute(kPositionAttribute, positions, 3);
+    if (hasNormals) {
+        normals.setData(mesh.normals);
+        vertexArray.setAttribute(kNormalAttribute, normals, 3);
+    } else {
+        vertexArray.disableAttribute(kNormalAttribute, glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
+    }
+    if (hasColors) {
+        colors.setData(mesh.colors);
+        vertexArray.setAttribute(kColorAttribute, colors, 4);
+    } else {
+        vertexArray.disableAttribute(kColorAttribute, glm::vec4(1.0f));
+    }
+    // The element buffer binding is VAO state: bind it while the VAO is bound.
+    vertexArray.setIndexBuffer(indices);
+    indices.setData(mesh.indices);
+    VertexArray::unbind();
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    uploaded = true;
+}
+
+} // namespace volsg

@@ -1,0 +1,30 @@
+#pragma once
+// A Mesh on the GPU: vertex buffers, index buffer and the VAO that binds them.
+
+#include <volsg/geometry/Mesh.h>
+#include <volsg/gl/Buffer.h>
+#include <volsg/gl/VertexArray.h>
+#include <volsg/math/Box3.h>
+
+namespace volsg {
+
+/// Attribute locations shared with the shape shaders.
+enum MeshAttribute : GLuint { kPositionAttribute = 0, kNormalAttribute = 1, kColorAttribute = 2 };
+
+struct GpuMesh {
+    VertexArray vertexArray;
+    Buffer positions, normals, colors, indices;
+    GLsizei indexCount = 0;
+    GLenum mode = GL_TRIANGLES;
+    bool hasNormals = false;           ///< one normal per position
+    bool hasColors = false;            ///< one colour per position (replaces the diffuse colour)
+    bool hasTranslucentColors = false; ///< some vertex colour has alpha < 1
+    Box3 bounds;                       ///< local coordinates
+    bool uploaded = false;
+
+    /// Sends `mesh` to the GPU (the GL context must be current). Throws Error for an index
+    /// beyond the positions, which would make the draw read outside the buffers.
+    void upload(const Mesh& mesh);
+};
+
+} // namespace volsg

@@ -1,0 +1,30 @@
+#include <volsg/render/NodeCache.h>
+
+#include <functional>
+
+namespace volsg {
+
+std::size_t NodeCache::KeyHash::operator()(const Key& k) const noexcept {
+    std::size_t h = std::hash<const void*>()(k.node);
+    h ^= k.type.hash_code() + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h ^= std::hash<std::uint64_t>()(k.key) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    return h;
+}
+
+NodeCache::Entry& NodeCache::findOrInsert(const Node& node, std::type_index type, std::uint64_t key,
+                                          std::unique_ptr<SlotBase> (*make)()) {
+    auto [it, inserted] = entries_.try_emplace(Key{&node, type, key});
+    Entry& e = it->second;
+    if (inserted) {
+        e.node = ref_ptr<const Node>(&node);
+        e.slot = make();
+    }
+    e.lastUsedFrame = frame_;
+    return e;
+}
+
+void NodeCache::endFrame() {
+    std::erase_if(entries_, [this](const auto& kv) { return kv.second.lastUsedFrame != frame_; });
+}
+
+} // namespace volsg

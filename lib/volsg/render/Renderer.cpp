@@ -1,0 +1,230 @@
+#include <volsg/actions/BoundingBoxAction.h>
+#include <volsg/core/Error.h>
+#include <volsg/gl/GlDebug.h>
+#include <volsg/nodes/Camera.h>
+#include <volsg/nodes/Light.h>
+#include <volsg/render/NodeCache.h>
+#include <volsg/render/RenderAction.h>
+#include <volsg/render/RenderTarget.h>
+#include <volsg/render/Renderer.h>
+#include <volsg/render/ShapeRenderer.h>
+
+#include <algorithm>
+
+namespace volsg {
+
+namespace {
+
+/// Walks the scene as every action does (doAction on each node, so transforms and
+/// separators act) and notes the first Camera with its model matrix and whether any light
+/// is on. Stops as soon as it knows what it was asked for.
+class SceneSurveyAction : public Action {
+public:
+    explicit SceneSurveyAction(bool wantLights) : wantLights_(wantLights) {}
+
+    Camera* camera() const { return camera_.get(); }
+    const glm::dmat4& cameraModel() const { return cameraModel_; }
+    bool hasLight() const { return hasLight_; }
+
+protected:
+    void dispatch(Node& node) override {
+        if (!camera_ && node.isA<Camera>()) {
+            camera_ = ref_ptr<Camera>(static_cast<Camera*>(&node));
+            cameraModel_ = state().modelMatrix();
+        }
+        if (node.isA<Light>() && static_cast<Light&>(node).on()) hasLight_ = true;
+        node.doAction(*this);
+        if (camera_ && (hasLight_ || !wantLights_)) terminate();
+    }
+
+private:
+    bool wantLights_;
+    ref_ptr<Camera> camera_;
+    glm::dmat4 cameraModel_{1.0};
+    bool hasLight_ = false;
+};
+
+SceneCamera makeViewAllCamera(Node& root, double aspect) {
+    ref_ptr<PerspectiveCamera> camera = PerspectiveCamera::create();
+    camera->viewAll(computeBoundingBox(root), aspect);
+    return {camera, glm::dmat4(1.0)};
+}
+
+/// The fixed GL state each pass starts from (see RenderPass).
+void setPassState(RenderPass pass) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    switch (pass) {
+    case RenderPass::Opaque:
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+        break;
+    case RenderPass::Volume:
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        break;
+    case RenderPass::Transparent:
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        // Colour: src over dst with alpha = 1 - transparency. Alpha: coverage accumulates.
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        break;
+    }
+}
+
+/// The framebuffer bindings of the caller, put back when a render is done (or throws).
+class BoundFramebuffers {
+public:
+    BoundFramebuffers() {
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_);
+        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_);
+    }
+    ~BoundFramebuffers() {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw_));
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read_));
+    }
+    BoundFramebuffers(const BoundFramebuffers&) = delete;
+    BoundFramebuffers& operator=(const BoundFramebuffers&) = delete;
+    GLuint draw() const { return GLuint(draw_); }
+
+private:
+    GLint draw_ = 0, read_ = 0;
+};
+
+/// GL's row 0 is the bottom; the Image's is the top.
+template <class T> void flipRows(std::vector<T>& pixels, int width, int height) {
+    const std::size_t w = std::size_t(width);
+    for (std::size_t top = 0, bottom = std::size_t(height) - 1; top < bottom; ++top, --bottom)
+        std::swap_ranges(pixels.begin() + std::ptrdiff_t(top * w),
+                         pixels.begin() + std::ptrdiff_t((top + 1) * w),
+                         pixels.begin() + std::ptrdiff_t(bottom * w));
+}
+
+} // namespace
+
+SceneCamera findOrMakeCamera(Node& root, double viewportAspect) {
+    SceneSurveyAction survey(false);
+    survey.apply(root);
+    if (survey.camera()) return {ref_ptr<Camera>(survey.camera()), survey.cameraModel()};
+    return makeViewAllCamera(root, viewportAspect);
+}
+
+struct Renderer::Impl {
+    NodeCache cache;
+    ShapeRenderer shapes;
+    RenderTarget target;
+    RenderStats stats;
+
+    /// Draws one frame into `target` (left bound).
+    void drawFrame(Node& root, const RenderOptions& options);
+};
+
+void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
+    if (options.width <= 0 || options.height <= 0)
+        throw Error("render size " + std::to_string(options.width) + "x" +
+                    std::to_string(options.height) + " is empty");
+    const double aspect = double(options.width) / double(options.height);
+
+    SceneSurveyAction survey(true);
+    survey.apply(root);
+    SceneCamera scene;
+    if (options.camera)
+        scene = {options.camera, glm::dmat4(1.0)};
+    else if (survey.camera())
+        scene = {ref_ptr<Camera>(survey.camera()), survey.cameraModel()};
+    else
+        scene = makeViewAllCamera(root, aspect);
+
+    RenderView view;
+    view.view = scene.camera->viewMatrix(scene.model);
+    view.projection = scene.camera->projectionMatrix(aspect);
+    view.width = options.width;
+    view.height = options.height;
+    // An affine projection (last row 0 0 0 1) is orthographic: every ray has one direction.
+    view.orthographic = view.projection[3][3] == 1.0 && view.projection[2][3] == 0.0;
+    const glm::dmat4 eyeToWorld = glm::inverse(view.view);
+    view.viewer = view.orthographic ? glm::dvec4(glm::normalize(glm::dvec3(eyeToWorld[2])), 0.0)
+                                    : glm::dvec4(glm::dvec3(eyeToWorld[3]), 1.0);
+    view.headlight = !survey.hasLight();
+
+    target.resize(options.width, options.height);
+    target.bind();
+    glViewport(0, 0, options.width, options.height);
+    glDepthMask(GL_TRUE);
+    glClearColor(options.background.r, options.background.g, options.background.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    cache.beginFrame();
+    shapes.beginFrame(view);
+    RenderAction action(cache, shapes, target, view, options.interactive);
+    for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
+        if (options.opaqueOnly && pass != RenderPass::Opaque) break;
+        setPassState(pass);
+        shapes.beginPass();
+        action.setPass(pass);
+        action.apply(root);
+        if (pass == RenderPass::Transparent) shapes.drawQueuedTransparent();
+    }
+    shapes.endFrame();
+    cache.endFrame();
+
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    ++stats.frames;
+    stats.meshUploads = shapes.meshUploads();
+    stats.programBuilds = shapes.programBuilds();
+    stats.cachedEntries = cache.size();
+    stats.shapeDraws = shapes.drawsLastFrame();
+}
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
+    impl_->stats.programBuilds = impl_->shapes.programBuilds();
+}
+
+Renderer::~Renderer() = default;
+
+std::vector<float> Renderer::readWindowDepth() const {
+    const RenderTarget& target = impl_->target;
+    if (target.width() == 0) return {};
+    const BoundFramebuffers caller;
+    std::vector<float> depth(std::size_t(target.width()) * std::size_t(target.height()));
+    target.framebuffer().bind(GL_READ_FRAMEBUFFER);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, target.width(), target.height(), GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    flipRows(depth, target.width(), target.height());
+    checkGlError("Renderer::readWindowDepth");
+    return depth;
+}
+
+const RenderStats& Renderer::stats() const {
+    return impl_->stats;
+}
+
+Image Renderer::render(Node& root, const RenderOptions& options) {
+    const BoundFramebuffers caller;
+    impl_->drawFrame(root, options);
+    Image image(options.width, options.height);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_FLOAT, image.pixels.data());
+    flipRows(image.pixels, options.width, options.height);
+    checkGlError("Renderer::render");
+    return image;
+}
+
+void Renderer::renderToBoundFramebuffer(Node& root, const RenderOptions& options) {
+    const BoundFramebuffers caller;
+    impl_->drawFrame(root, options);
+    impl_->target.framebuffer().bind(GL_READ_FRAMEBUFFER);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, caller.draw());
+    glBlitFramebuffer(0, 0, options.width, options.height, 0, 0, options.width, options.height,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glViewport(0, 0, options.width, options.height);
+    checkGlError("Renderer::renderToBoundFramebuffer");
+}
+
+} // namespace volsg

@@ -1,0 +1,100 @@
+#pragma once
+// Draws shapes' meshes with Inventor's Phong lighting, clip planes and transparency.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <volsg/gl/Program.h>
+#include <volsg/render/RenderAction.h>
+
+namespace volsg {
+
+struct GpuMesh;
+struct Mesh;
+
+/// One per Renderer (so per GL context): the shape program and the queue of transparent
+/// shapes. Shading (linear values, no gamma), per fragment:
+///   colour = emissive + 0.2 * ambient
+///          + sum over lights of intensity * colour * (diffuse * max(N.L, 0)
+///                                                    + specular * max(N.H, 0)^(shininess*128))
+///   alpha  = 1 - transparency
+/// with the first value of each field of the nearest Material (Inventor's defaults without
+/// one), vertex colours in place of the diffuse colour, N flipped towards the viewer, and H
+/// the half vector to the viewer. Lines are unlit: emissive + diffuse.
+class ShapeRenderer {
+public:
+    static constexpr int kMaxLights = 8;
+    /// Clip planes are limited by GL_MAX_CLIP_DISTANCES (8 here), and by this.
+    static constexpr int kMaxClipPlanes = 16;
+
+    ShapeRenderer(); ///< compiles the program; the context must be current
+    ShapeRenderer(const ShapeRenderer&) = delete;
+    ShapeRenderer& operator=(const ShapeRenderer&) = delete;
+
+    /// How many ClipPlanes a shape may have in scope (GL_MAX_CLIP_DISTANCES, at most 16).
+    int maxClipPlanes() const { return maxClipPlanes_; }
+
+    /// Puts `mesh` on the GPU into `gpu` (counted in meshUploads()).
+    void upload(GpuMesh& gpu, const Mesh& mesh);
+    /// Draws `gpu` with the material, lights, clip planes and model matrix in scope at the
+    /// action's current node: at once if it is opaque and this is the Opaque pass; queued
+    /// if it is transparent and this is the Transparent pass; not at all otherwise. Throws
+    /// Error for more clip planes or lights in scope than it can draw.
+    void submit(RenderAction& action, const GpuMesh& gpu);
+
+    /// Per frame: the camera; clears the transparent queue.
+    void beginFrame(const RenderView& view);
+    /// Per pass: resets the clip-distance switches this class keeps track of.
+    void beginPass();
+    /// Draws the queued transparent shapes, farthest centre first, and empties the queue.
+    void drawQueuedTransparent();
+    /// Leaves GL with no program, no VAO and no clip distances enabled.
+    void endFrame();
+
+    std::uint64_t meshUploads() const { return meshUploads_; }
+    std::uint64_t programBuilds() const { return programBuilds_; }
+    std::size_t drawsLastFrame() const { return drawsLastFrame_; }
+
+private:
+    /// Everything one draw needs, captured during traversal (transparent draws happen after).
+    struct DrawItem {
+        const GpuMesh* mesh = nullptr;
+        glm::mat4 model{1.0f};
+        glm::mat3 normalMatrix{1.0f};
+        glm::vec3 emissive{0.0f}, ambient{0.0f}, diffuse{0.8f}, specular{0.0f};
+        float shininess = 0.0f, alpha = 1.0f;
+        bool lit = true;
+        int lightCount = 0;
+        std::array<glm::vec4, kMaxLights> lightVectors{};
+        std::array<glm::vec3, kMaxLights> lightColors{};
+        int clipPlaneCount = 0;
+        std::array<glm::vec4, kMaxClipPlanes> clipPlanes{};
+        double eyeDepth = 0.0; ///< eye-space z of the bounds' centre (more negative = farther)
+    };
+    struct Locations {
+        GLint model, normalMatrix, viewProjection, clipPlanes, clipPlaneCount, lit, hasNormals,
+            hasColors, emissive, ambient, diffuse, specular, shininess, alpha, viewer, lightCount,
+            lightVector, lightColor;
+    };
+
+    void fill(RenderAction& action, const GpuMesh& gpu, DrawItem& item);
+    void draw(const DrawItem& item);
+    void setClipDistances(int count);
+
+    Program program_;
+    Locations loc_{};
+    int maxClipPlanes_ = 8;
+    int enabledClipPlanes_ = 0;
+    RenderView view_;
+    std::vector<DrawItem> transparentQueue_;
+    std::vector<SceneLight> lightScratch_;
+    std::vector<glm::dvec4> planeScratch_;
+    std::uint64_t meshUploads_ = 0;
+    std::uint64_t programBuilds_ = 0;
+    std::size_t drawsLastFrame_ = 0;
+};
+
+} // namespace volsg
