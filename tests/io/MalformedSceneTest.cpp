@@ -204,6 +204,7 @@ TEST_CASE("a huge list in a short file is an error, not an allocation") {
 }
 
 TEST_CASE("an unterminated string is an error naming where it started") {
+    test::registerTestNodeTypes();
     CHECK_ERROR(header + "AllFieldsNode {\n sfString \"abc\n\n", "bad.iv:", "started at 3:11");
 }
 
