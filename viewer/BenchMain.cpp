@@ -1,17 +1,23 @@
-// volsg-bench: frame times of a scene seen from orbiting views, and the built-in suites.
+// volsg-bench: frame times of a scene seen from orbiting views (and, with --error, their error
+// against the reference ray caster), and the built-in suites.
 // A benchmark, not a test: it prints medians and minima and asserts nothing.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 #include <string>
+#include <vector>
 
 #include "CommandLine.h"
+#include "bench/BenchRow.h"
+#include "bench/ImageError.h"
 #include "bench/OrbitCamera.h"
+#include "bench/ReferenceViews.h"
 #include "bench/SceneGenerators.h"
 #include "bench/Timing.h"
+#include "bench/VolumeSuite.h"
 #include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/context/Context.h>
 #include <volsg/core/Error.h>
@@ -24,15 +30,29 @@ using namespace volsg;
 
 const char* usage =
     "usage: volsg-bench SCENE.iv [--frames N] [--size WxH] [--backend osmesa|egl]\n"
+    "                   [--error [--error-frames K]] [--csv FILE] [--plot FILE.svg]\n"
     "       volsg-bench --suite parse|traversal|all [--nodes N] [--side S] [--frames N]\n"
-    "                   [--keep DIR]\n";
+    "                   [--keep DIR]\n"
+    "       volsg-bench --suite volumes [--size WxH] [--frames N] [--error-frames K]\n"
+    "                   [--volume-side N] [--csv FILE] [--plot FILE.svg] [--keep DIR]\n"
+    "  --error         also compare K of the frames with the reference ray caster (same\n"
+    "                  views, same size): RMSE, PSNR and max abs error\n"
+    "  --error-frames  how many frames to compare (default: all, at most 4)\n"
+    "  --suite volumes generated volume scenes, every volume path and setting: ms/frame,\n"
+    "                  error against the reference, memory (default 128x128, 12 frames,\n"
+    "                  64^3 voxels; --volume-side 128 for 128^3)\n";
 
 struct Settings {
-    std::string scene, suite, keepDir;
+    std::string scene, suite, keepDir, csv, plot;
     int frames = 20;
+    bool framesGiven = false;
     int nodes = 100000;
     int side = 100;
+    int volumeSide = 64;
+    bool error = false;
+    int errorFrames = 4;
     RenderOptions options;
+    bool sizeGiven = false;
     Backend backend = Backend::OSMesa;
 };
 
@@ -41,22 +61,31 @@ void printRow(const char* what, const bench::Samples& s, const char* unit = "ms/
                 s.min(), unit);
 }
 
+/// Times the orbit views; keeps the images of the views listed in views.errorIndices.
+bench::Samples orbitFrames(Renderer& renderer, Node& root, const RenderOptions& base,
+                           const bench::OrbitViews& views, std::vector<Image>* kept = nullptr) {
+    RenderOptions options = base;
+    options.camera = views.cameras[0];
+    renderer.render(root, options); // warm-up: shader compiles and uploads are not frames
+    bench::Samples samples;
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < views.cameras.size(); ++i) {
+        options.camera = views.cameras[i];
+        Image image;
+        samples.ms.push_back(bench::timeMs([&] { image = renderer.render(root, options); }));
+        if (kept && next < views.errorIndices.size() && views.errorIndices[next] == int(i)) {
+            kept->push_back(std::move(image));
+            ++next;
+        }
+    }
+    return samples;
+}
+
 bench::Samples orbitFrames(Node& root, const Settings& st) {
     auto context = Context::createOffscreen(st.backend);
     Renderer renderer;
-    const double aspect = double(st.options.width) / st.options.height;
-    const SceneCamera sceneCamera = findOrMakeCamera(root, aspect);
-    const Box3 box = computeBoundingBox(root);
-    const glm::dvec3 center = box.isEmpty() ? glm::dvec3(0.0) : box.center();
-    RenderOptions options = st.options;
-    options.camera = bench::orbitCamera(sceneCamera, center, 0.0);
-    renderer.render(root, options); // warm-up: shader compiles and uploads are not frames
-    bench::Samples samples;
-    for (int i = 0; i < st.frames; ++i) {
-        options.camera = bench::orbitCamera(sceneCamera, center, 2.0 * std::numbers::pi * i / st.frames);
-        samples.ms.push_back(bench::timeMs([&] { renderer.render(root, options); }));
-    }
-    return samples;
+    return orbitFrames(renderer, root, st.options,
+                       bench::makeOrbitViews(root, st.options, st.frames, 0));
 }
 
 void keep(const Settings& st, const std::string& name, const std::string& text) {
@@ -82,7 +111,8 @@ void traversalSuite(const Settings& st) {
     keep(st, "traversal.iv", text);
     ref_ptr<Node> root = readSceneFromString(text, "traversal.iv");
     bench::Samples bbox;
-    for (int i = 0; i < 20; ++i) bbox.ms.push_back(bench::timeMs([&] { computeBoundingBox(*root); }));
+    for (int i = 0; i < 20; ++i)
+        bbox.ms.push_back(bench::timeMs([&] { computeBoundingBox(*root); }));
     char what[96];
     std::snprintf(what, sizeof what, "bounding box, %dx%d grid (%d shapes)", st.side, st.side,
                   st.side * st.side);
@@ -92,44 +122,151 @@ void traversalSuite(const Settings& st) {
     printRow(what, orbitFrames(*root, st));
 }
 
+void writeOutputs(const Settings& st, const std::vector<bench::BenchRow>& rows,
+                  const std::string& title, const std::string& note = {}) {
+    if (!st.csv.empty()) {
+        bench::writeCsv(st.csv, rows);
+        std::printf("wrote %s\n", st.csv.c_str());
+    }
+    if (!st.plot.empty()) {
+        bench::writeRowsPlot(st.plot, title, rows, note);
+        std::printf("wrote %s\n", st.plot.c_str());
+    }
+}
+
+/// A scene file: the frame times of its orbit views, and with --error its error against the
+/// reference on K of the same views.
+int sceneBenchmark(const Settings& st) {
+    ref_ptr<Node> root = readScene(st.scene);
+    auto context = Context::createOffscreen(st.backend);
+    Renderer renderer;
+    const bench::OrbitViews views =
+        bench::makeOrbitViews(*root, st.options, st.frames, st.error ? st.errorFrames : 0);
+    std::vector<Image> images;
+    const bench::Samples samples = orbitFrames(renderer, *root, st.options, views, &images);
+    char what[160];
+    std::snprintf(what, sizeof what, "%s %dx%d %s", st.scene.c_str(), st.options.width,
+                  st.options.height, st.backend == Backend::EGL ? "egl" : "osmesa");
+    printRow(what, samples);
+
+    bench::BenchRow row;
+    row.scene = std::filesystem::path(st.scene).stem().string();
+    row.path = "gl";
+    row.setting = std::to_string(st.options.width) + "x" + std::to_string(st.options.height) +
+                  (st.backend == Backend::EGL ? " egl" : " osmesa");
+    row.ms = samples.median();
+    row.frames = int(samples.ms.size());
+    row.series = "gl";
+    std::vector<bench::BenchRow> rows;
+    if (st.error) {
+        const RayCastOptions rayOptions;
+        const bench::ReferenceImages reference =
+            bench::renderReferenceViews(*root, st.options, views, rayOptions);
+        bench::ImageError error;
+        for (std::size_t i = 0; i < images.size(); ++i)
+            error.add(images[i], reference.images[i]);
+        row.hasError = true;
+        row.rmse = error.rmse();
+        row.psnr = error.psnr();
+        row.maxAbs = error.maxAbs();
+        row.errorFrames = int(images.size());
+        row.note = "reference error bound " + std::to_string(reference.errorBound);
+        std::printf("%-44s %6zu views RMSE %.3e  PSNR %.2f dB  max abs %.3e  (reference %.1f "
+                    "ms/frame, error bound %.2g%s)\n",
+                    "  error vs reference", images.size(), row.rmse, row.psnr, row.maxAbs,
+                    reference.ms.median(), reference.errorBound,
+                    reference.converged ? "" : ", not converged everywhere");
+        bench::BenchRow refRow;
+        refRow.scene = row.scene;
+        refRow.path = "reference";
+        refRow.setting = "tolerance " + std::to_string(rayOptions.tolerance);
+        refRow.ms = reference.ms.median();
+        refRow.frames = int(reference.ms.ms.size());
+        refRow.memoryBytes = reference.rssDelta;
+        refRow.memoryKind = "rss";
+        rows.push_back(refRow);
+    }
+    rows.insert(rows.begin(), row);
+    writeOutputs(st, rows, "volsg-bench " + row.scene + ": RMSE against the reference vs time");
+    return 0;
+}
+
 int run(int argc, char** argv) {
     cli::Arguments args(argc, argv);
     Settings st;
     while (!args.empty()) {
         const std::string a = args.take();
-        if (a == "--frames") st.frames = args.intValue(a, 1, 100000);
-        else if (a == "--size") {
+        if (a == "--frames") {
+            st.frames = args.intValue(a, 1, 100000);
+            st.framesGiven = true;
+        } else if (a == "--size") {
             const glm::ivec2 s = cli::parseSize(args.value(a));
             st.options.width = s.x;
             st.options.height = s.y;
-        } else if (a == "--backend") st.backend = parseBackend(args.value(a));
-        else if (a == "--suite") st.suite = args.value(a);
-        else if (a == "--nodes") st.nodes = args.intValue(a, 4, 10000000);
-        else if (a == "--side") st.side = args.intValue(a, 1, 1000);
-        else if (a == "--keep") st.keepDir = args.value(a);
+            st.sizeGiven = true;
+        } else if (a == "--error")
+            st.error = true;
+        else if (a == "--error-frames")
+            st.errorFrames = args.intValue(a, 1, 100000);
+        else if (a == "--csv")
+            st.csv = args.value(a);
+        else if (a == "--plot")
+            st.plot = args.value(a);
+        else if (a == "--volume-side")
+            st.volumeSide = args.intValue(a, 2, 1024);
+        else if (a == "--background")
+            st.options.background = cli::parseColor(args.value(a));
+        else if (a == "--backend")
+            st.backend = parseBackend(args.value(a));
+        else if (a == "--suite")
+            st.suite = args.value(a);
+        else if (a == "--nodes")
+            st.nodes = args.intValue(a, 4, 10000000);
+        else if (a == "--side")
+            st.side = args.intValue(a, 1, 1000);
+        else if (a == "--keep")
+            st.keepDir = args.value(a);
         else if (a == "-h" || a == "--help") {
             std::fputs(usage, stdout);
             return 0;
-        } else if (!a.empty() && a[0] == '-') throw Error("unknown option '" + a + "'");
-        else if (st.scene.empty()) st.scene = a;
-        else throw Error("more than one scene file given");
+        } else if (!a.empty() && a[0] == '-')
+            throw Error("unknown option '" + a + "'");
+        else if (st.scene.empty())
+            st.scene = a;
+        else
+            throw Error("more than one scene file given");
     }
     if (st.scene.empty() == st.suite.empty()) {
         std::fputs(usage, stderr);
         return 2;
     }
-    if (!st.scene.empty()) {
-        ref_ptr<Node> root = readScene(st.scene);
-        char what[160];
-        std::snprintf(what, sizeof what, "%s %dx%d %s", st.scene.c_str(), st.options.width,
-                      st.options.height, st.backend == Backend::EGL ? "egl" : "osmesa");
-        printRow(what, orbitFrames(*root, st));
+    if (!st.scene.empty()) return sceneBenchmark(st);
+    if (st.suite == "volumes") {
+        bench::VolumeSuiteSettings vs;
+        if (st.sizeGiven) {
+            vs.width = st.options.width;
+            vs.height = st.options.height;
+        }
+        if (st.framesGiven) vs.frames = st.frames;
+        vs.errorFrames = std::min(st.errorFrames, vs.frames);
+        vs.side = st.volumeSide;
+        vs.background = st.options.background;
+        vs.backend = st.backend;
+        vs.keepDir = st.keepDir;
+        const std::vector<bench::BenchRow> rows = bench::runVolumeSuite(vs);
+        char note[200];
+        std::snprintf(note, sizeof note,
+                      "%dx%d, %d rotating views, %d compared with the reference at tolerance "
+                      "1e-4; labels: planes per voxel (slicing), tolerance (reference)",
+                      vs.width, vs.height, vs.frames, vs.errorFrames);
+        writeOutputs(st, rows, "volsg-bench volume suite: RMSE against the reference vs time",
+                     note);
         return 0;
     }
     if (st.suite == "parse" || st.suite == "all") parseSuite(st);
     if (st.suite == "traversal" || st.suite == "all") traversalSuite(st);
     if (st.suite != "parse" && st.suite != "traversal" && st.suite != "all")
-        throw Error("unknown suite '" + st.suite + "' (parse, traversal, all)");
+        throw Error("unknown suite '" + st.suite + "' (parse, traversal, volumes, all)");
     return 0;
 }
 

@@ -49,6 +49,22 @@ constexpr std::array<std::array<int, 2>, 12> kEdges{{{0, 1},
                                                      {2, 6},
                                                      {3, 7}}};
 
+/// A number that grows with the angle of (x, y) around the origin like atan2 does (in
+/// [-2, 2)), without its cost: the polygon's vertices only need to be put in order.
+double pseudoAngle(double x, double y) {
+    const double a = std::abs(x) + std::abs(y);
+    if (a == 0.0) return 0.0;
+    const double p = y / a; // in [-1, 1], monotonic in the angle on each half plane
+    return x >= 0.0 ? p : (y >= 0.0 ? 2.0 - p : -2.0 - p);
+}
+
+/// Insertion sort: a slice polygon has 3 to 6 vertices.
+void sortSmall(std::pair<double, int>* items, int count) {
+    for (int i = 1; i < count; ++i)
+        for (int j = i; j > 0 && items[j] < items[j - 1]; --j)
+            std::swap(items[j], items[j - 1]);
+}
+
 } // namespace
 
 glm::dvec2 ProxyPlaneCutter::depthRange(const glm::dvec3& lo, const glm::dvec3& hi,
@@ -68,6 +84,15 @@ ProxySlices ProxyPlaneCutter::cut(const glm::dvec3& lo, const glm::dvec3& hi,
                                   const glm::dmat4& modelView, const PlaneLayout& layout,
                                   double minDepth) {
     ProxySlices out;
+    cutInto(lo, hi, modelView, layout, minDepth, out);
+    return out;
+}
+
+void ProxyPlaneCutter::cutInto(const glm::dvec3& lo, const glm::dvec3& hi,
+                               const glm::dmat4& modelView, const PlaneLayout& layout,
+                               double minDepth, ProxySlices& out) {
+    out.vertices.clear();
+    out.firsts.clear();
     out.spacing = layout.spacing;
     const DepthFunction depth(modelView);
     const auto c = corners(lo, hi);
@@ -102,9 +127,9 @@ ProxySlices ProxyPlaneCutter::cut(const glm::dvec3& lo, const glm::dvec3& hi,
         centroid /= count;
         for (int i = 0; i < count; ++i) {
             const glm::dvec3 r = points[i] - centroid;
-            order[i] = {std::atan2(glm::dot(r, v), glm::dot(r, u)), i};
+            order[i] = {pseudoAngle(glm::dot(r, u), glm::dot(r, v)), i};
         }
-        std::sort(order.begin(), order.begin() + count);
+        sortSmall(order.data(), count);
         out.firsts.push_back(std::uint32_t(out.vertices.size()));
         for (int i = 1; i + 1 < count; ++i) {
             out.vertices.emplace_back(points[order[0].second]);
@@ -112,7 +137,42 @@ ProxySlices ProxyPlaneCutter::cut(const glm::dvec3& lo, const glm::dvec3& hi,
             out.vertices.emplace_back(points[order[i + 1].second]);
         }
     }
-    return out;
+}
+
+void ProxyPlaneCutter::appendPlanePolygon(const glm::dvec3& lo, const glm::dvec3& hi,
+                                          const glm::dvec3& normal, double distance,
+                                          std::vector<glm::vec3>& out) {
+    if (!(glm::length(normal) > 0.0)) return;
+    const auto c = corners(lo, hi);
+    std::array<double, 8> f;
+    for (int i = 0; i < 8; ++i)
+        f[i] = glm::dot(normal, c[i]) - distance;
+    std::array<glm::dvec3, 12> points;
+    int count = 0;
+    glm::dvec3 centroid(0.0);
+    for (const auto& e : kEdges) {
+        const double f0 = f[e[0]], f1 = f[e[1]];
+        if ((f0 < 0.0) == (f1 < 0.0)) continue;
+        points[count] = glm::mix(c[e[0]], c[e[1]], f0 / (f0 - f1));
+        centroid += points[count++];
+    }
+    if (count < 3) return;
+    centroid /= count;
+    const glm::dvec3 n = glm::normalize(normal);
+    const glm::dvec3 helper = std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 u = glm::normalize(glm::cross(n, helper));
+    const glm::dvec3 v = glm::cross(n, u);
+    std::array<std::pair<double, int>, 12> order;
+    for (int i = 0; i < count; ++i) {
+        const glm::dvec3 r = points[i] - centroid;
+        order[i] = {pseudoAngle(glm::dot(r, u), glm::dot(r, v)), i};
+    }
+    sortSmall(order.data(), count);
+    for (int i = 1; i + 1 < count; ++i) {
+        out.emplace_back(points[order[0].second]);
+        out.emplace_back(points[order[i].second]);
+        out.emplace_back(points[order[i + 1].second]);
+    }
 }
 
 } // namespace volsg

@@ -43,6 +43,17 @@ public:
     static ProxySlices cut(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
                            const glm::dmat4& modelView, const PlaneLayout& layout,
                            double minDepth = 0.0);
+    /// As cut(), into `out` (cleared first), reusing its memory: no allocation per frame once
+    /// warm.
+    static void cutInto(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
+                        const glm::dmat4& modelView, const PlaneLayout& layout, double minDepth,
+                        ProxySlices& out);
+
+    /// The polygon where the plane n . p = d crosses the box, as triangles appended to `out`
+    /// (nothing when it misses). Used for the faces that bound a volume's visible part.
+    static void appendPlanePolygon(const glm::dvec3& boxMin, const glm::dvec3& boxMax,
+                                   const glm::dvec3& normal, double distance,
+                                   std::vector<glm::vec3>& out);
 
     /// The eye depth range [nearest, farthest] (as positive distances along -Z) of the box's
     /// corners.

@@ -13,12 +13,31 @@
 namespace volsg {
 
 /// Every Volume node a render would draw, as the reference ray caster describes it (in
-/// traversal order). Throws Error when a volume's data cannot be loaded.
+/// traversal order), from the state at the node:
+/// - data and tags: the nearest VolumeData in scope; model: the model matrix at the Volume;
+/// - transferFunctions: every TransferFunction in scope by tag (a later one for the same tag
+///   replaces an earlier one; Separators scope them as any property);
+/// - mode and planeOpacity: the Volume's renderMode and planeOpacity fields;
+/// - boxClip: the nearest BoxClip, its box in the BoxClip's own coordinates (its model matrix
+///   is RayCastBoxClip::model), so a Transform between BoxClip and Volume moves the volume,
+///   not the box;
+/// - clipPlanes: every ClipPlane in scope that is on, in world coordinates.
+/// Throws Error for a Volume with no VolumeData in scope ("Volume without VolumeData in
+/// scope": the GL path has nothing to draw either, and silently dropping it would hide a
+/// broken scene from the error measurement), when a volume's data cannot be loaded, and for
+/// an invalid TransferFunction.
 std::vector<RayCastVolume> collectVolumes(Node& root);
 
+/// The camera of a render of `root` with these options, as the ray caster takes it: the
+/// options' camera or findOrMakeCamera(), with Camera::projectionMatrix(width / height) as
+/// the GL Renderer uses, and rays clipped to near and far as GL clips. Throws Error for an
+/// empty size.
+RayCastCamera referenceCamera(Node& root, const RenderOptions& options);
+
 /// The reference image of a scene: opaque geometry from the GL renderer (colour and depth,
-/// volumes left out), then the volumes by ReferenceRayCaster over it, then transparent
-/// geometry is NOT included (documented limitation). Needs a current GL context.
+/// volumes left out), then the volumes by ReferenceRayCaster over it, on referenceCamera().
+/// Transparent geometry is NOT included (a documented limitation: compare scenes without it).
+/// Needs a current GL context. `details` receives the caster's result (error bound, ...).
 Image renderReference(Node& root, const RenderOptions& options, RayCastResult* details = nullptr,
                       const RayCastOptions& rayOptions = {});
 

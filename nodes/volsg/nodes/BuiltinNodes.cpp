@@ -1,5 +1,6 @@
 // The registry of node types the reader knows by name. A new node type adds one line here.
 #include <volsg/core/NodeType.h>
+#include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/Cone.h>
@@ -16,7 +17,10 @@
 #include <volsg/nodes/Separator.h>
 #include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Switch.h>
+#include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/Transform.h>
+#include <volsg/nodes/Volume.h>
+#include <volsg/nodes/VolumeData.h>
 
 namespace volsg {
 
@@ -40,6 +44,10 @@ void registerBuiltinNodeTypes(NodeRegistry& r) {
     r.add(IndexedFaceSet::classType());
     r.add(IndexedLineSet::classType());
     r.add(ClipPlane::classType());
+    r.add(VolumeData::classType());
+    r.add(TransferFunction::classType());
+    r.add(BoxClip::classType());
+    r.add(Volume::classType());
 }
 
 } // namespace volsg

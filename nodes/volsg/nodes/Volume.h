@@ -3,6 +3,7 @@
 // Inventor Volume node), with the TransferFunctions, ClipPlanes and BoxClip in scope.
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
+#include <volsg/slicing/SlicingStats.h>
 
 namespace volsg {
 
@@ -26,8 +27,14 @@ public:
     void render(RenderAction& action) override;
     void getBoundingBox(BoundingBoxAction& action) override;
 
+    /// What the last render of this node did (bricks drawn and skipped, uploads, planes).
+    const SlicingStats& slicingStats() const { return slicingStats_; }
+
 protected:
     ~Volume() override = default;
+
+private:
+    SlicingStats slicingStats_;
 };
 
 } // namespace volsg

@@ -5,17 +5,20 @@
 
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
+#include <volsg/volume/VolumeGrid.h> // complete: the node holds ref_ptrs to grids
 
 namespace volsg {
-
-class VolumeGrid;
 
 class VolumeData : public Inherit<Node, VolumeData> {
 public:
     static constexpr const char* typeName = "VolumeData";
     enum DataType { UBYTE, USHORT, SHORT, FLOAT };
     enum ByteOrder { LITTLE_ENDIAN_ORDER, BIG_ENDIAN_ORDER };
-    /// Generated test volumes (lib/volsg/volume/TestVolumes.h); NONE reads fileName.
+    /// Generated test volumes (lib/volsg/volume/TestVolumes.h); NONE reads fileName. Their size
+    /// is `dimensions` (0 0 0: 64^3; all but RAMP16 are cubic). MARSCHNER_LOBB and SOFT_SPHERE
+    /// store `dataType`; THIN_SHELL is UBYTE (radius 0.35 n, 1.5 voxels thick); RAMP16 is
+    /// USHORT 0..65535 along x; LABELLED is a UBYTE soft sphere with four tags. Each has its
+    /// own spacing (Marschner-Lobb 2/(n-1), others 1) unless `spacing` is set.
     enum Generator { NONE, MARSCHNER_LOBB, SOFT_SPHERE, THIN_SHELL, RAMP16, LABELLED };
     static const EnumValues dataTypeNames, tagDataTypeNames, byteOrderNames, generatorNames;
 
@@ -24,13 +27,17 @@ public:
     SFEnum dataType{this, "dataType", dataTypeNames, UBYTE};
     SFEnum byteOrder{this, "byteOrder", byteOrderNames, LITTLE_ENDIAN_ORDER};
     SFUInt32 headerSkip{this, "headerSkip", 0u};
-    SFVec3f spacing{this, "spacing", glm::vec3(1.0f)}; ///< from the header where it has one
+    /// Raw files: the voxel size. NRRD/MetaImage headers and generators give their own unless
+    /// this field is set in the scene (Field::isDefault() false).
+    SFVec3f spacing{this, "spacing", glm::vec3(1.0f)};
+    /// Labels: raw files take tagDataType, the data's dimensions and byteOrder, no headerSkip.
     SFString tagFileName{this, "tagFileName", ""};
     SFEnum tagDataType{this, "tagDataType", tagDataTypeNames, UBYTE};
     SFEnum generator{this, "generator", generatorNames, NONE};
 
-    /// The voxels, loaded on first use and again after a field changes. Throws Error naming
-    /// the file and the problem.
+    /// The voxels, loaded on first use and again after a field changes (relative file names
+    /// resolve against the folder of the scene file, see readDone). Throws Error naming the
+    /// file and the problem. Not thread-safe: call from one thread at a time.
     ref_ptr<const VolumeGrid> grid() const;
     /// The label volume, or null without tagFileName (or a generator without labels).
     ref_ptr<const VolumeGrid> tagGrid() const;

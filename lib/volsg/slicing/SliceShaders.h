@@ -1,0 +1,413 @@
+#pragma once
+// GLSL of the 3D-texture slicer. Compiled with "#version 330 core" and defines in front:
+// MODE (0 DVR, 1 MIP, 2 MINIP, 3 AVERAGE), TAGGED, LIGHTING, PREINTEGRATED, and the sizes
+// ENTRIES (transfer-table samples per row), PRE_SIZE, PLANE_OPACITY_SIZE, MAX_CLIP_PLANES,
+// MAX_LIGHTS.
+
+namespace volsg::shaders {
+
+/// Proxy polygons: box-local positions, passed on in local coordinates.
+inline constexpr const char* sliceVertex = R"GLSL(
+layout(location = 0) in vec3 aLocal;
+uniform mat4 uModelView;  // volume-local -> eye
+uniform mat4 uProjection;
+out vec3 vLocal;
+void main() {
+    vLocal = aLocal;
+    gl_Position = uProjection * (uModelView * vec4(aLocal, 1.0));
+}
+)GLSL";
+
+/// What the slice and composite programs share: data reconstruction, normalisation, the
+/// transfer-table lookup and the careful float maths of opacity.
+inline constexpr const char* sliceCommon = R"GLSL(
+// Per row: ENTRIES samples of (r, g, b, tau L0) over v, a copy of the last one (so that the
+// linear filter never reaches further), then (lo, hi) of the row's dataRange.
+uniform sampler2D uTable;
+
+vec2 rangeOf(int row) { return texelFetch(uTable, ivec2(ENTRIES + 1, row), 0).rg; }
+
+// SCENE-FORMAT 4: v = clamp((d - lo) / (hi - lo), 0, 1); hi == lo is a step at lo.
+float normalised(float d, vec2 range) {
+    if (range.x == range.y) return d >= range.x ? 1.0 : 0.0;
+    return clamp((d - range.x) / (range.y - range.x), 0.0, 1.0);
+}
+
+// (C, tau L0) at v: the filter interpolates linearly between neighbouring samples of the row
+// (float weights on float textures); sampling at the row's centre keeps other rows out.
+vec4 classify(float v, int row) {
+    vec2 size = vec2(textureSize(uTable, 0));
+    return texture(uTable, vec2((clamp(v, 0.0, 1.0) * float(ENTRIES - 1) + 0.5) / size.x,
+                                (float(row) + 0.5) / size.y));
+}
+
+// 1 - e^-D: a series where exp(-D) would round away a tiny D; 1 (never NaN) for huge D.
+float opacityOf(float D) {
+    if (D < 0.01) return D * (1.0 - D * (0.5 - D * (1.0 / 6.0 - D * (1.0 / 24.0))));
+    return 1.0 - exp(-D);
+}
+)GLSL";
+
+inline constexpr const char* sliceFragment = R"GLSL(
+in vec3 vLocal;
+out vec4 fragColor;
+
+uniform sampler3D uData;
+uniform usampler3D uTags;
+uniform usampler2D uTagRows;      // tag -> row, 256 x 256
+uniform sampler2D uPreIntegrated; // (mean colour, mean optical depth per L0) over (v_front, v_back)
+uniform sampler1D uPlaneOpacity;  // m(t), PLANE_OPACITY_SIZE samples over t in [0, 1]
+uniform sampler2D uOpaqueDepth;   // a copy of the opaque pass's depth (window depth, 0..1)
+
+uniform vec3 uHalfExtent;   // the volume box is [-uHalfExtent, uHalfExtent] (local)
+uniform vec3 uInvSpacing;   // local -> voxel coordinates: u = (p + uHalfExtent) * uInvSpacing
+uniform vec3 uVoxelCount;   // the volume's dimensions
+uniform vec3 uTexOrigin;    // voxel index of the brick texture's first texel
+uniform vec3 uTexSize;      // texels of the brick texture
+uniform vec3 uOwnMin;       // the part of the volume box this brick draws (local)
+uniform vec3 uOwnMax;
+uniform float uDataScale;   // data = texel * uDataScale + uDataOffset
+uniform float uDataOffset;
+uniform bool uOrthographic;
+uniform vec3 uEyeLocal;     // perspective: the eye in local coordinates
+uniform vec3 uViewDirLocal; // orthographic: the (unit) direction of every ray, local
+uniform vec4 uDepthPlane;   // eye depth of local point p: dot(uDepthPlane.xyz, p) + uDepthPlane.w
+uniform bool uHasOpaqueDepth;
+uniform float uPlaneSpacing; // eye units between neighbouring planes along the view axis
+uniform float uInvL0;        // 1 / smallest voxel spacing (local units)
+uniform float uNear;         // eye depths of the camera's near and far planes
+uniform float uFar;
+uniform bool uHasPlaneOpacity;
+uniform float uBoxNear;      // eye depths of the nearest and farthest volume-box corner
+uniform float uBoxFar;
+uniform int uClipPlaneCount;
+uniform vec4 uClipPlanes[MAX_CLIP_PLANES]; // local (n, d): keep dot(n, p) >= d
+uniform bool uHasBoxClip;
+uniform mat4 uLocalToBox;    // volume-local -> BoxClip coordinates
+uniform vec3 uBoxMin;
+uniform vec3 uBoxMax;
+uniform vec2 uRegionOpacity; // extinction multiplier outside (x) and inside (y) the BoxClip box
+uniform vec3 uRegionColor[2];
+uniform vec2 uRegionWeight;
+uniform uint uInfoMask;      // MIP/MINIP: low key bits that carry row * 2 + region
+uniform bool uFacePass;      // drawing the volume box's front faces, for slivers (see main)
+uniform float uLayoutNear;   // eye depth of the plane layout's start: plane k at
+                             // uLayoutNear + (k + 0.5) * uPlaneSpacing
+
+#ifdef LIGHTING
+uniform mat4 uModel;         // local -> world
+uniform mat3 uNormalMatrix;  // local covectors -> world (inverse transpose)
+uniform vec4 uViewer;        // eye position (w = 1) or direction towards the viewer (w = 0)
+uniform int uLightCount;
+uniform vec4 uLightVector[MAX_LIGHTS]; // position (w = 1) or direction towards it (w = 0)
+uniform vec3 uLightColor[MAX_LIGHTS];
+uniform float uAmbient;
+uniform vec3 uSpecular;
+uniform float uShininess;
+#endif
+
+vec3 voxelCoord(vec3 local) { return (local + uHalfExtent) * uInvSpacing; }
+vec3 texCoord(vec3 local) { return (voxelCoord(local) - uTexOrigin) / uTexSize; }
+float dataAt(vec3 tc) { return texture(uData, tc).r * uDataScale + uDataOffset; }
+
+int rowAt(vec3 local) {
+#ifdef TAGGED
+    // Nearest neighbour: the voxel whose cell holds the point, never interpolated.
+    ivec3 voxel = ivec3(floor(voxelCoord(local))) - ivec3(uTexOrigin);
+    voxel = clamp(voxel, ivec3(0), ivec3(uTexSize) - 1);
+    uint tag = texelFetch(uTags, voxel, 0).r;
+    return int(texelFetch(uTagRows, ivec2(int(tag & 255u), int(tag >> 8u)), 0).r);
+#else
+    return 0;
+#endif
+}
+
+// Where origin + t dir is inside the box [lo, hi]: t in [range.x, range.y] (empty when
+// range.x > range.y). Vector arithmetic: a zero direction component divides by a tiny number
+// instead, which gives -+huge on the two sides of an inside point.
+vec2 slabInterval(vec3 origin, vec3 dir, vec3 lo, vec3 hi) {
+    vec3 inv = 1.0 / mix(dir, vec3(1e-30), equal(dir, vec3(0.0)));
+    vec3 ta = (lo - origin) * inv;
+    vec3 tb = (hi - origin) * inv;
+    vec3 tNear = min(ta, tb);
+    vec3 tFar = max(ta, tb);
+    return vec2(max(max(tNear.x, tNear.y), tNear.z), min(min(tFar.x, tFar.y), tFar.z));
+}
+
+#ifdef TAGGED
+// The slab [vLocal - front, vLocal + back] along `dir`, split at the faces of the tag cell of
+// vLocal: each part is classified with its own cell's tag and data at its middle, so tag
+// boundaries (steps of the transfer function) fall where the cell faces are, as in the
+// reference, rather than where the planes are. Gives the length-weighted mean tau L0 and the
+// extinction-weighted colour of the slab.
+void classifySlab(vec3 dir, float front, float back, out vec3 color, out float tauL0) {
+    vec3 u0 = voxelCoord(vLocal);
+    vec3 cell = clamp(floor(u0), vec3(0.0), uVoxelCount - 1.0);
+    vec2 inCell = slabInterval(u0, dir * uInvSpacing, cell, cell + 1.0);
+    float cut[4] = float[4](-front, clamp(inCell.x, -front, back), 0.0, back);
+    cut[2] = clamp(inCell.y, cut[1], back);
+    vec3 emitted = vec3(0.0);
+    float depthSum = 0.0;
+    vec3 fallback = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        float length = cut[i + 1] - cut[i];
+        if (!(length > 0.0) && i != 1) continue;
+        vec3 x = vLocal + dir * (0.5 * (cut[i] + cut[i + 1]));
+        int row = rowAt(x);
+        vec4 rgba = classify(normalised(dataAt(texCoord(x)), rangeOf(row)), row);
+        float tau = rgba.a * max(length, 0.0);
+        emitted += tau * rgba.rgb;
+        depthSum += tau;
+        if (i == 1) fallback = rgba.rgb;
+    }
+    float thickness = front + back;
+    tauL0 = thickness > 0.0 ? depthSum / thickness : 0.0;
+    color = depthSum > 0.0 ? emitted / depthSum : fallback;
+}
+#endif
+
+float planeOpacityAt(float t) {
+    float x = clamp(t, 0.0, 1.0) * float(PLANE_OPACITY_SIZE - 1);
+    int i = min(int(x), PLANE_OPACITY_SIZE - 2);
+    float f = x - float(i);
+    return max(mix(texelFetch(uPlaneOpacity, i, 0).r, texelFetch(uPlaneOpacity, i + 1, 0).r, f),
+               0.0);
+}
+
+#ifdef LIGHTING
+// Inventor's Phong model with the transfer-function colour as ambient and diffuse colour and
+// the normal from the gradient of v (central differences, one voxel either side).
+vec3 shade(vec3 C, vec3 tc, vec2 range) {
+    vec3 texel = 1.0 / uTexSize;
+    vec3 g = vec3(dataAt(tc + vec3(texel.x, 0, 0)) - dataAt(tc - vec3(texel.x, 0, 0)),
+                  dataAt(tc + vec3(0, texel.y, 0)) - dataAt(tc - vec3(0, texel.y, 0)),
+                  dataAt(tc + vec3(0, 0, texel.z)) - dataAt(tc - vec3(0, 0, texel.z)));
+    float width = range.y - range.x;
+    g *= 0.5 * uInvSpacing / (width != 0.0 ? width : 1.0); // dv per local unit
+    vec3 world = (uModel * vec4(vLocal, 1.0)).xyz;
+    vec3 V = normalize(uViewer.xyz - world * uViewer.w);
+    vec3 gw = uNormalMatrix * g;
+    // Homogeneous regions have no surface: they face the viewer.
+    vec3 N = length(g) / uInvL0 > 1e-3 ? -normalize(gw) : V;
+    if (dot(N, V) < 0.0) N = -N; // two-sided, as shapes are lit
+    vec3 color = uAmbient * C;
+    for (int i = 0; i < uLightCount; ++i) {
+        vec3 L = normalize(uLightVector[i].xyz - world * uLightVector[i].w);
+        float NdotL = dot(N, L);
+        if (NdotL <= 0.0) continue;
+        float NdotH = max(dot(N, normalize(L + V)), 0.0);
+        float specular = uShininess > 0.0 ? pow(NdotH, uShininess) : 1.0;
+        color += uLightColor[i] * (C * NdotL + uSpecular * specular);
+    }
+    return color;
+}
+#endif
+
+void main() {
+    if (!uFacePass) {
+        // The polygons are cut from the brick's box grown by a margin, so that no pixel is
+        // lost to rasterisation at the box's and the bricks' edges; what lies outside the
+        // brick's part of the volume box is decided here, with the same arithmetic for every
+        // brick and plane. (A point exactly on a seam would count for both bricks: a set of
+        // measure zero.)
+        if (any(lessThan(vLocal, uOwnMin)) || any(greaterThan(vLocal, uOwnMax))) discard;
+    }
+    // The pixel's ray through this point: its direction, the path length between this plane
+    // and the next along it (local units), and how fast eye depth grows along it.
+    vec3 dir = uOrthographic ? uViewDirLocal : normalize(vLocal - uEyeLocal);
+    float depth = dot(uDepthPlane.xyz, vLocal) + uDepthPlane.w;
+    float depthRate = dot(uDepthPlane.xyz, dir); // > 0: the ray moves away from the eye
+    float ds = uPlaneSpacing / depthRate;
+
+    // The stretch of the ray around this point that may hold volume: inside the box, between
+    // the near and far planes, on the kept side of every clip plane.
+    vec2 inBox = slabInterval(vLocal, dir, -uHalfExtent, uHalfExtent);
+    float tEnter = inBox.x, tExit = inBox.y;
+    tEnter = max(tEnter, (uNear - depth) / depthRate);
+    tExit = min(tExit, (uFar - depth) / depthRate);
+    // Opaque geometry ends the ray (the depth test rejects the planes behind it).
+    float windowDepth = uHasOpaqueDepth ? texelFetch(uOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r
+                                        : 1.0;
+    if (windowDepth < 1.0) {
+        float ndc = 2.0 * windowDepth - 1.0;
+        float opaqueDepth = uOrthographic
+                                ? uNear + windowDepth * (uFar - uNear)
+                                : 2.0 * uNear * uFar / ((uFar + uNear) - ndc * (uFar - uNear));
+        tExit = min(tExit, (opaqueDepth - depth) / depthRate);
+    }
+    for (int i = 0; i < uClipPlaneCount; ++i) {
+        float f = dot(uClipPlanes[i].xyz, vLocal) - uClipPlanes[i].w;
+        if (f < 0.0) discard;
+        float rate = dot(uClipPlanes[i].xyz, dir);
+        if (rate > 0.0) tEnter = max(tEnter, -f / rate);
+        else if (rate < 0.0) tExit = min(tExit, -f / rate);
+    }
+    float front, back;
+    vec3 p = vLocal; // where the slab is sampled
+    if (uFacePass) {
+        // A front face of the box: it stands for the ray's whole stretch through the volume
+        // when no plane crosses that stretch (a sliver near a silhouette, thinner than the
+        // plane spacing), and for nothing otherwise, when plane fragments cover the ray.
+        float t0 = max(tEnter, 0.0);
+        if (!(tExit > t0)) discard;
+        float d0 = depth + depthRate * t0;
+        float k = ceil((d0 - uLayoutNear) / uPlaneSpacing - 0.5);
+        if (uLayoutNear + (k + 0.5) * uPlaneSpacing < depth + depthRate * tExit) discard;
+        front = 0.0;
+        back = tExit - t0;
+        p = vLocal + dir * (0.5 * (t0 + tExit));
+    } else {
+        // This plane stands for half the way to each neighbour; where a neighbour's point on
+        // the ray is outside that stretch, no neighbour fragment exists there, so this one
+        // stands for the whole way to the boundary. The slabs then tile each ray's part of
+        // the volume exactly.
+        front = -tEnter < ds ? max(-tEnter, 0.0) : 0.5 * ds;
+        back = tExit < ds ? max(tExit, 0.0) : 0.5 * ds;
+    }
+    float thickness = front + back;
+    if (thickness <= 0.0) discard;
+
+    int row = rowAt(p);
+    vec2 range = rangeOf(row);
+    // BoxClip: the sample's region, and how much of the slab lies inside the box, so that a
+    // slab cut by a box face gets each region's opacity and colour for its own length.
+    int region = 0;
+    float insideLength = 0.0;
+    if (uHasBoxClip) {
+        vec3 q = (uLocalToBox * vec4(p, 1.0)).xyz;
+        region = all(greaterThanEqual(q, uBoxMin)) && all(lessThanEqual(q, uBoxMax)) ? 1 : 0;
+        // The slab is measured from vLocal.
+        vec2 inClip = slabInterval((uLocalToBox * vec4(vLocal, 1.0)).xyz,
+                                   mat3(uLocalToBox) * dir, uBoxMin, uBoxMax);
+        insideLength = max(0.0, min(back, inClip.y) - max(-front, inClip.x));
+    }
+    float outsideLength = max(thickness - insideLength, 0.0);
+
+#if MODE == 0
+    float m = uHasPlaneOpacity ? planeOpacityAt((depth - uBoxNear) / (uBoxFar - uBoxNear)) : 1.0;
+    float wIn = uRegionOpacity.y * insideLength;
+    float wOut = uRegionOpacity.x * outsideLength;
+    float weighted = (wIn + wOut) * m; // local length, times the modifiers of tau
+    if (!(weighted > 0.0)) discard;
+    vec3 tc = texCoord(p);
+#ifdef PREINTEGRATED
+    float vFront = normalised(dataAt(texCoord(vLocal - dir * front)), range);
+    float vBack = normalised(dataAt(texCoord(vLocal + dir * back)), range);
+    vec4 segment = texture(uPreIntegrated,
+                           (vec2(vFront, vBack) * float(PRE_SIZE - 1) + 0.5) / float(PRE_SIZE));
+    vec3 C = segment.rgb;
+    float D = segment.a * weighted * uInvL0;
+#else
+    vec3 C;
+    float tauL0;
+#ifdef TAGGED
+    if (!uFacePass) {
+        classifySlab(dir, front, back, C, tauL0);
+    } else
+#endif
+    {
+        vec4 rgba = classify(normalised(dataAt(tc), range), row);
+        C = rgba.rgb;
+        tauL0 = rgba.a;
+    }
+    float D = tauL0 * weighted * uInvL0;
+#endif
+    // Each region's share of the extinction emits its own blended colour.
+    C = (wIn * mix(C, uRegionColor[1], uRegionWeight.y) +
+         wOut * mix(C, uRegionColor[0], uRegionWeight.x)) / (wIn + wOut);
+#ifdef LIGHTING
+    C = shade(C, tc, range);
+#endif
+    float alpha = opacityOf(D);
+    if (!(alpha > 0.0)) discard;
+    fragColor = vec4(C * alpha, alpha);
+#elif MODE == 3
+    // The kept length of the slab weighs the sample.
+    float kept = (uRegionOpacity.y > 0.0 ? insideLength : 0.0) +
+                 (uRegionOpacity.x > 0.0 ? outsideLength : 0.0);
+    if (!(kept > 0.0)) discard;
+    float v = normalised(dataAt(texCoord(p)), range);
+    fragColor = vec4(v * kept, kept, 0.0, 0.0);
+#else
+    // The extreme v over the slab: at the sample point and where the ray crosses the voxel-
+    // centre plane nearest to it along each axis (the trilinear field's kinks, where peaks of
+    // thin structures sit), skipping samples in a removed BoxClip region.
+    float best = MODE == 1 ? -1.0 : 2.0;
+    int bestInfo = 0;
+    vec3 u0 = voxelCoord(vLocal);
+    vec3 du = dir * uInvSpacing;
+    vec3 tCentre = (floor(u0) + 0.5 - u0) / mix(du, vec3(1e-30), equal(du, vec3(0.0)));
+    vec4 ts = vec4(uFacePass ? 0.5 * back : 0.0, tCentre);
+    for (int i = 0; i < 4; ++i) {
+        float t = ts[i];
+        if (t < -front || t > back) continue;
+        vec3 x = vLocal + dir * t;
+        int rowHere = rowAt(x);
+        int regionHere = 0;
+        if (uHasBoxClip) {
+            vec3 q = (uLocalToBox * vec4(x, 1.0)).xyz;
+            regionHere = all(greaterThanEqual(q, uBoxMin)) && all(lessThanEqual(q, uBoxMax)) ? 1 : 0;
+        }
+        if ((regionHere == 1 ? uRegionOpacity.y : uRegionOpacity.x) <= 0.0) continue;
+        float v = normalised(dataAt(texCoord(x)), rangeOf(rowHere));
+        if (MODE == 1 ? v > best : v < best) {
+            best = v;
+            bestInfo = rowHere * 2 + regionHere;
+        }
+    }
+    if (best < 0.0 || best > 1.0) discard; // every sample removed
+    // v + 1 lies in [1, 2]: its bit pattern orders like v, and its lowest mantissa bits carry
+    // the row and region of the sample, so the max (min) blend keeps them with the extreme v.
+    fragColor = vec4(uintBitsToFloat((floatBitsToUint(best + 1.0) & ~uInfoMask) | uint(bestInfo)),
+                     0.0, 0.0, 0.0);
+#endif
+}
+)GLSL";
+
+/// A triangle that covers the viewport.
+inline constexpr const char* compositeVertex = R"GLSL(
+void main() {
+    vec2 corner = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
+    gl_Position = vec4(corner, 0.0, 1.0);
+}
+)GLSL";
+
+/// MIP / MINIP / AVERAGE: the projected value at each pixel through the transfer function,
+/// composited over what is drawn: C(v) A(v) + (1 - A(v)) behind.
+inline constexpr const char* compositeFragment = R"GLSL(
+uniform sampler2D uProjected;
+uniform uint uInfoMask;
+uniform vec3 uRegionColor[2];
+uniform vec2 uRegionWeight;
+out vec4 fragColor;
+
+void main() {
+    vec4 s = texelFetch(uProjected, ivec2(gl_FragCoord.xy), 0);
+    float v;
+    int row = 0;
+    int region = 0;
+    float weight = 0.0;
+#if MODE == 3
+    if (!(s.g > 0.0)) discard; // no unclipped volume on this ray
+    v = clamp(s.r / s.g, 0.0, 1.0);
+#else
+#if MODE == 1
+    if (s.r < 0.5) discard; // still the cleared 0
+#else
+    if (s.r > 3.0) discard; // still the cleared 4
+#endif
+    uint bits = floatBitsToUint(s.r);
+    uint info = bits & uInfoMask;
+    v = clamp(uintBitsToFloat(bits & ~uInfoMask) - 1.0, 0.0, 1.0);
+    row = int(info >> 1u);
+    region = int(info & 1u);
+    weight = uRegionWeight[region];
+#endif
+    vec4 rgba = classify(v, row);
+    float A = opacityOf(rgba.a); // A(v) = 1 - e^-(tau L0)
+    vec3 C = mix(rgba.rgb, uRegionColor[region], weight);
+    fragColor = vec4(C * A, A);
+}
+)GLSL";
+
+} // namespace volsg::shaders

@@ -1,0 +1,42 @@
+#pragma once
+// What the 3D-texture slicer did for one Volume: bricks, uploads, planes. Tests and the
+// benchmark read it to check that memory follows what is shown and caches are not rebuilt.
+
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace volsg {
+
+/// Counters of one volume's slicing renderer. The "last frame" values are overwritten by each
+/// render; the cumulative ones count since the volume's GPU cache was created (a new Renderer
+/// or new data starts a new cache and resets them).
+struct SlicingStats {
+    // Last frame.
+    int bricksTotal = 0;            ///< bricks the volume is split into (1 when it fits whole)
+    int bricksDrawn = 0;            ///< bricks sliced and drawn
+    int bricksSkipped = 0;          ///< bricks empty under the current transfer functions
+    int bricksResident = 0;         ///< bricks whose textures are on the GPU after the frame
+    std::size_t textureBytes = 0;   ///< bytes of the resident 3D textures (data and tags)
+    glm::ivec3 brickGrid{0};        ///< bricks along x, y, z
+    glm::ivec3 brickTexels{0};      ///< texels of the largest brick texture
+    int planes = 0;                 ///< proxy planes of the layout (over the whole volume box)
+    double planeSpacing = 0.0;      ///< eye units between neighbouring planes
+    std::size_t sliceTriangles = 0; ///< triangles drawn, all bricks together
+    /// Wall time of the CPU work before any draw is issued: state, plane layout, brick order,
+    /// cutting, vertex assembly (and table rebuilds when a transfer function changed).
+    double cpuMilliseconds = 0.0;
+    /// Wall time of issuing the GL work: brick uploads, uniforms, draws (including any wait
+    /// in the driver; llvmpipe may block here on earlier rendering).
+    double submitMilliseconds = 0.0;
+
+    // Cumulative.
+    std::uint64_t frames = 0;
+    std::uint64_t brickUploads = 0;         ///< brick textures sent to the GPU
+    std::uint64_t uploadedBytes = 0;        ///< their bytes
+    std::uint64_t transferTableBuilds = 0;  ///< transfer tables (and tag maps) baked and uploaded
+    std::uint64_t preIntegrationBuilds = 0; ///< pre-integration tables baked and uploaded
+};
+
+} // namespace volsg

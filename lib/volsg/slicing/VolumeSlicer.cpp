@@ -1,0 +1,915 @@
+#include <volsg/slicing/VolumeSlicer.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <volsg/core/Error.h>
+#include <volsg/gl/Buffer.h>
+#include <volsg/gl/Framebuffer.h>
+#include <volsg/gl/Program.h>
+#include <volsg/gl/Shader.h>
+#include <volsg/gl/Texture.h>
+#include <volsg/gl/VertexArray.h>
+#include <volsg/nodes/Group.h>
+#include <volsg/render/RenderAction.h>
+#include <volsg/render/RenderTarget.h>
+#include <volsg/render/ShapeRenderer.h>
+#include <volsg/slicing/BrickLayout.h>
+#include <volsg/slicing/PreIntegrationTable.h>
+#include <volsg/slicing/ProxyPlaneCutter.h>
+#include <volsg/slicing/SliceShaders.h>
+#include <volsg/slicing/TransferTable.h>
+#include <volsg/volume/VolumeGrid.h>
+
+namespace volsg {
+
+namespace {
+
+constexpr int kMaxClipPlanes = 32;
+constexpr int kMaxLights = 8;
+constexpr int kPlaneOpacitySize = 1024;
+constexpr int kMaxPlanes = 100000;
+/// Inventor's default environment: white ambient light of intensity 0.2 (as shapes use).
+constexpr float kAmbientIntensity = 0.2f;
+
+enum TextureUnit : GLuint {
+    kDataUnit = 0,
+    kTagUnit = 1,
+    kTagRowUnit = 2,
+    kTableUnit = 3,
+    kPreIntegratedUnit = 4,
+    kPlaneOpacityUnit = 5,
+    kProjectedUnit = 6,
+    kOpaqueDepthUnit = 7,
+    /// Active while textures are created or uploaded (Texture binds them to the active unit),
+    /// so that no upload replaces a texture bound for drawing.
+    kUploadUnit = 15
+};
+
+void activateUploadUnit() {
+    glActiveTexture(GL_TEXTURE0 + kUploadUnit);
+}
+
+enum Mode { kDvr = 0, kMip = 1, kMinip = 2, kAverage = 3 };
+
+Mode modeOf(VolumeRenderMode m) {
+    switch (m) {
+    case VolumeRenderMode::MIP:
+        return kMip;
+    case VolumeRenderMode::MINIP:
+        return kMinip;
+    case VolumeRenderMode::AVERAGE:
+        return kAverage;
+    case VolumeRenderMode::DVR:
+        break;
+    }
+    return kDvr;
+}
+
+/// Names the per-context resources all volumes share (programs, the projection target) in the
+/// Renderer's NodeCache, which keys entries by node: this node is never part of a scene.
+const Node& sharedCacheKey() {
+    static const ref_ptr<Group> key = Group::create();
+    return *key;
+}
+
+std::string prelude(int mode, bool tagged, bool lighting, bool preIntegrated) {
+    std::string s = "#version 330 core\n#define MODE " + std::to_string(mode) + "\n";
+    if (tagged) s += "#define TAGGED\n";
+    if (lighting) s += "#define LIGHTING\n";
+    if (preIntegrated) s += "#define PREINTEGRATED\n";
+    s += "#define ENTRIES " + std::to_string(TransferTable::kEntries) + "\n";
+    s += "#define PRE_SIZE " + std::to_string(PreIntegrationTable::kSize) + "\n";
+    s += "#define PLANE_OPACITY_SIZE " + std::to_string(kPlaneOpacitySize) + "\n";
+    s += "#define MAX_CLIP_PLANES " + std::to_string(kMaxClipPlanes) + "\n";
+    s += "#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
+    return s;
+}
+
+void setSamplers(const Program& p) {
+    p.use();
+    p.set("uData", int(kDataUnit));
+    p.set("uTags", int(kTagUnit));
+    p.set("uTagRows", int(kTagRowUnit));
+    p.set("uTable", int(kTableUnit));
+    p.set("uPreIntegrated", int(kPreIntegratedUnit));
+    p.set("uPlaneOpacity", int(kPlaneOpacityUnit));
+    p.set("uProjected", int(kProjectedUnit));
+    p.set("uOpaqueDepth", int(kOpaqueDepthUnit));
+}
+
+/// Per GL context: the program variants and the projection target of MIP/MINIP/AVERAGE.
+struct SliceShared {
+    std::map<int, Program> slicePrograms;
+    std::map<int, Program> compositePrograms;
+    VertexArray emptyVertexArray;
+    Framebuffer projectionFramebuffer;
+    Texture projected[2]; ///< [0] R32F keys (MIP, MINIP), [1] RG32F sums (AVERAGE)
+    glm::ivec2 projectedSize[2]{glm::ivec2(0), glm::ivec2(0)};
+    GLuint attachedDepth = 0;
+    Framebuffer opaqueDepthFramebuffer;
+    Texture opaqueDepth;
+    glm::ivec2 opaqueDepthSize{0};
+    int max3DTextureSize = 0;
+
+    const Program& sliceProgram(int mode, bool tagged, bool lighting, bool preIntegrated) {
+        const int key = mode | (tagged ? 4 : 0) | (lighting ? 8 : 0) | (preIntegrated ? 16 : 0);
+        auto it = slicePrograms.find(key);
+        if (it != slicePrograms.end()) return it->second;
+        const std::string head = prelude(mode, tagged, lighting, preIntegrated);
+        const Shader vertex(GL_VERTEX_SHADER, head + shaders::sliceVertex, "volume slice");
+        const Shader fragment(GL_FRAGMENT_SHADER,
+                              head + shaders::sliceCommon + shaders::sliceFragment, "volume slice");
+        Program p({&vertex, &fragment}, "volume slice");
+        setSamplers(p);
+        return slicePrograms.emplace(key, std::move(p)).first->second;
+    }
+
+    const Program& compositeProgram(int mode) {
+        auto it = compositePrograms.find(mode);
+        if (it != compositePrograms.end()) return it->second;
+        const std::string head = prelude(mode, false, false, false);
+        const Shader vertex(GL_VERTEX_SHADER, head + shaders::compositeVertex, "volume composite");
+        const Shader fragment(GL_FRAGMENT_SHADER,
+                              head + shaders::sliceCommon + shaders::compositeFragment,
+                              "volume composite");
+        Program p({&vertex, &fragment}, "volume composite");
+        setSamplers(p);
+        return compositePrograms.emplace(mode, std::move(p)).first->second;
+    }
+
+    /// Copies the opaque pass's depth into a texture the slices may read: sampling the depth
+    /// attached to the framebuffer being drawn would be a feedback loop.
+    void copyOpaqueDepth(RenderTarget& target) {
+        activateUploadUnit();
+        const glm::ivec2 size(target.width(), target.height());
+        if (!opaqueDepthFramebuffer) {
+            opaqueDepthFramebuffer = Framebuffer::create();
+            opaqueDepth = Texture(GL_TEXTURE_2D);
+            opaqueDepth.setFilter(GL_NEAREST, GL_NEAREST);
+        }
+        if (opaqueDepthSize != size) {
+            opaqueDepth.image2D(GL_DEPTH_COMPONENT32F, size.x, size.y, GL_DEPTH_COMPONENT, GL_FLOAT,
+                                nullptr);
+            opaqueDepthFramebuffer.attach(GL_DEPTH_ATTACHMENT, opaqueDepth);
+            glDrawBuffer(GL_NONE);
+            glReadBuffer(GL_NONE);
+            opaqueDepthFramebuffer.requireComplete("volume opaque-depth copy");
+            opaqueDepthSize = size;
+        }
+        target.framebuffer().bind(GL_READ_FRAMEBUFFER);
+        opaqueDepthFramebuffer.bind(GL_DRAW_FRAMEBUFFER);
+        glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_DEPTH_BUFFER_BIT,
+                          GL_NEAREST);
+        target.bind();
+    }
+
+    /// Binds the projection target (sharing the render target's opaque depth) and clears it.
+    void beginProjection(RenderTarget& target, int which, float clearValue) {
+        activateUploadUnit();
+        const glm::ivec2 size(target.width(), target.height());
+        bool reattach = false;
+        if (!projectionFramebuffer) projectionFramebuffer = Framebuffer::create();
+        if (!projected[which]) {
+            projected[which] = Texture(GL_TEXTURE_2D);
+            projected[which].setFilter(GL_NEAREST, GL_NEAREST);
+        }
+        if (projectedSize[which] != size) {
+            projected[which].image2D(which == 0 ? GL_R32F : GL_RG32F, size.x, size.y,
+                                     which == 0 ? GL_RED : GL_RG, GL_FLOAT, nullptr);
+            projectedSize[which] = size;
+            reattach = true;
+        }
+        projectionFramebuffer.attach(GL_COLOR_ATTACHMENT0, projected[which]);
+        if (reattach || attachedDepth != target.depthTexture().id()) {
+            projectionFramebuffer.attach(GL_DEPTH_ATTACHMENT, target.depthTexture());
+            attachedDepth = target.depthTexture().id();
+        }
+        projectionFramebuffer.requireComplete("volume projection target");
+        projectionFramebuffer.bind();
+        glClearColor(clearValue, clearValue, 0.0f, 0.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+};
+
+/// One brick's textures and what the CPU knows about its voxels.
+struct BrickState {
+    Texture data, tags;
+    bool resident = false;
+    std::uint64_t lastUse = 0;
+    double dataMin = 0.0, dataMax = 0.0; ///< over the texture's voxels (non-finite replaced)
+    int tagMin = 0, tagMax = 0;
+    bool mayEmit = true; ///< under the current transfer functions
+    GLint first = 0;     ///< this frame's slice vertices
+    GLsizei count = 0;
+    GLint faceFirst = 0; ///< this frame's front faces on the volume box (sliver rays)
+    GLsizei faceCount = 0;
+};
+
+/// How the data type goes into a texture: data = scale * texel + offset.
+struct DataFormat {
+    GLenum internalFormat = GL_R16;
+    GLenum type = GL_UNSIGNED_BYTE;
+    std::size_t texelBytes = 2;
+    float scale = 255.0f;
+    float offset = 0.0f;
+};
+
+/// 8-bit data goes into R16 (the driver widens x to x * 257, exactly x / 255). Measured on
+/// llvmpipe, sampling between two voxels 100 and 101 at 256 positions: R8 returned values off
+/// by up to 0.498 data units (its filter rounds to 1/255 steps), R16 by 9e-6. R16 costs twice
+/// the memory and is what we use. Short data is shifted by 32768 into R16, which
+/// keeps all 65536 values (R16_SNORM merges -32768 with -32767, R16F keeps 11 bits).
+DataFormat dataFormatOf(VoxelType type) {
+    switch (type) {
+    case VoxelType::UByte:
+        return {GL_R16, GL_UNSIGNED_BYTE, 2, 255.0f, 0.0f};
+    case VoxelType::UShort:
+        return {GL_R16, GL_UNSIGNED_SHORT, 2, 65535.0f, 0.0f};
+    case VoxelType::Short:
+        return {GL_R16, GL_UNSIGNED_SHORT, 2, 65535.0f, -32768.0f};
+    case VoxelType::Float:
+        return {GL_R32F, GL_FLOAT, 4, 1.0f, 0.0f};
+    }
+    return {};
+}
+
+/// Per volume (node and grid): bricks, tables and geometry, kept across frames.
+struct VolumeTextures {
+    ref_ptr<const VolumeGrid> data, tags;
+    DataFormat format;
+    double finiteMin = 0.0, finiteMax = 0.0;
+    glm::dvec2 naturalRange{0.0, 1.0};
+
+    bool hasLayout = false;
+    std::uint64_t layoutBudget = 0;
+    int layoutGuard = 0;
+    BrickLayout layout;
+    std::vector<BrickState> bricks;
+    std::size_t residentBytes = 0;
+    std::uint64_t useCounter = 0;
+    bool filterNearest = false;
+
+    bool hasTable = false;
+    std::uint64_t tableKey = 0;
+    TransferTable table;
+    Texture tableTexture, tagRowTexture;
+
+    bool hasPreIntegration = false;
+    PreIntegrationTable preIntegration;
+    Texture preIntegrationTexture;
+
+    std::vector<PiecewiseLinear::Point> planeOpacity;
+    Texture planeOpacityTexture;
+
+    Buffer vertexBuffer;
+    VertexArray vertexArray;
+    std::vector<glm::vec3> vertices;
+    ProxySlices slices;
+    std::vector<int> order;
+    std::vector<std::uint8_t> scratch8;
+    std::vector<std::uint16_t> scratch16;
+    std::vector<float> scratchFloat;
+
+    SlicingStats totals;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Voxels of a brick
+
+template <class T> double replaced(T x, double lowest, double highest) {
+    if constexpr (std::is_same_v<T, float>) {
+        // As the reference: NaN and -Inf become the smallest finite value, +Inf the largest.
+        if (std::isnan(x) || x == -std::numeric_limits<float>::infinity()) return lowest;
+        if (x == std::numeric_limits<float>::infinity()) return highest;
+    }
+    (void)lowest;
+    (void)highest;
+    return double(x);
+}
+
+/// Calls f(value) for every voxel of the brick's texture, x fastest.
+template <class T, class F> void forEachVoxel(const VolumeGrid& grid, const Brick& b, F&& f) {
+    const auto src = grid.data<T>();
+    const glm::ivec3 d = grid.dimensions();
+    for (int k = 0; k < b.voxelCount.z; ++k)
+        for (int j = 0; j < b.voxelCount.y; ++j) {
+            const std::size_t row =
+                std::size_t(b.firstVoxel.x) +
+                std::size_t(d.x) * (std::size_t(b.firstVoxel.y + j) +
+                                    std::size_t(d.y) * std::size_t(b.firstVoxel.z + k));
+            for (int i = 0; i < b.voxelCount.x; ++i)
+                f(src[row + std::size_t(i)]);
+        }
+}
+
+template <class T>
+void dataRangeOf(const VolumeGrid& grid, const Brick& b, double lowest, double highest,
+                 BrickState& out) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    forEachVoxel<T>(grid, b, [&](T x) {
+        const double d = replaced(x, lowest, highest);
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+    });
+    out.dataMin = lo;
+    out.dataMax = hi;
+}
+
+template <class T> void tagRangeOf(const VolumeGrid& grid, const Brick& b, BrickState& out) {
+    int lo = std::numeric_limits<int>::max(), hi = std::numeric_limits<int>::min();
+    forEachVoxel<T>(grid, b, [&](T x) {
+        lo = std::min(lo, int(x));
+        hi = std::max(hi, int(x));
+    });
+    out.tagMin = lo;
+    out.tagMax = hi;
+}
+
+void measureBricks(VolumeTextures& v) {
+    const VolumeGrid& grid = *v.data;
+    for (std::size_t i = 0; i < v.bricks.size(); ++i) {
+        const Brick& b = v.layout.bricks()[i];
+        BrickState& s = v.bricks[i];
+        switch (grid.type()) {
+        case VoxelType::UByte:
+            dataRangeOf<std::uint8_t>(grid, b, v.finiteMin, v.finiteMax, s);
+            break;
+        case VoxelType::UShort:
+            dataRangeOf<std::uint16_t>(grid, b, v.finiteMin, v.finiteMax, s);
+            break;
+        case VoxelType::Short:
+            dataRangeOf<std::int16_t>(grid, b, v.finiteMin, v.finiteMax, s);
+            break;
+        case VoxelType::Float:
+            dataRangeOf<float>(grid, b, v.finiteMin, v.finiteMax, s);
+            break;
+        }
+        if (v.tags) {
+            if (v.tags->type() == VoxelType::UByte)
+                tagRangeOf<std::uint8_t>(*v.tags, b, s);
+            else
+                tagRangeOf<std::uint16_t>(*v.tags, b, s);
+        }
+    }
+}
+
+/// The brick's voxels as `U`, converted by `convert`, in `out` (reused).
+template <class T, class U, class F>
+const U* gather(const VolumeGrid& grid, const Brick& b, std::vector<U>& out, F&& convert) {
+    out.resize(b.texels());
+    std::size_t n = 0;
+    forEachVoxel<T>(grid, b, [&](T x) { out[n++] = convert(x); });
+    return out.data();
+}
+
+void uploadBrick(VolumeTextures& v, const Brick& b, BrickState& s, bool withTags) {
+    const VolumeGrid& grid = *v.data;
+    const bool whole = b.voxelCount == grid.dimensions();
+    const void* pixels = nullptr;
+    switch (grid.type()) {
+    case VoxelType::UByte:
+        pixels = whole
+                     ? grid.data<std::uint8_t>().data()
+                     : gather<std::uint8_t>(grid, b, v.scratch8, [](std::uint8_t x) { return x; });
+        break;
+    case VoxelType::UShort:
+        pixels =
+            whole ? grid.data<std::uint16_t>().data()
+                  : gather<std::uint16_t>(grid, b, v.scratch16, [](std::uint16_t x) { return x; });
+        break;
+    case VoxelType::Short:
+        pixels = gather<std::int16_t>(grid, b, v.scratch16,
+                                      [](std::int16_t x) { return std::uint16_t(int(x) + 32768); });
+        break;
+    case VoxelType::Float: {
+        const double lo = v.finiteMin, hi = v.finiteMax;
+        pixels = gather<float>(grid, b, v.scratchFloat,
+                               [lo, hi](float x) { return float(replaced(x, lo, hi)); });
+        break;
+    }
+    }
+    if (!s.data) s.data = Texture(GL_TEXTURE_3D);
+    s.data.image3D(v.format.internalFormat, b.voxelCount.x, b.voxelCount.y, b.voxelCount.z, GL_RED,
+                   v.format.type, pixels);
+    const GLenum filter = v.filterNearest ? GL_NEAREST : GL_LINEAR;
+    s.data.setFilter(filter, filter);
+    std::size_t bytes = b.texels() * v.format.texelBytes;
+
+    if (withTags) {
+        const VolumeGrid& tags = *v.tags;
+        const bool wide = tags.type() == VoxelType::UShort;
+        const void* labels = nullptr;
+        if (wide)
+            labels = whole ? tags.data<std::uint16_t>().data()
+                           : gather<std::uint16_t>(tags, b, v.scratch16,
+                                                   [](std::uint16_t x) { return x; });
+        else
+            labels =
+                whole ? tags.data<std::uint8_t>().data()
+                      : gather<std::uint8_t>(tags, b, v.scratch8, [](std::uint8_t x) { return x; });
+        if (!s.tags) {
+            s.tags = Texture(GL_TEXTURE_3D);
+            s.tags.setFilter(GL_NEAREST, GL_NEAREST); // integer textures are never filtered
+        }
+        s.tags.image3D(wide ? GL_R16UI : GL_R8UI, b.voxelCount.x, b.voxelCount.y, b.voxelCount.z,
+                       GL_RED_INTEGER, wide ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE, labels);
+        bytes += b.texels() * (wide ? 2 : 1);
+    } else {
+        s.tags = Texture();
+    }
+    s.resident = true;
+    v.residentBytes += bytes;
+    ++v.totals.brickUploads;
+    v.totals.uploadedBytes += bytes;
+}
+
+std::size_t residentBytesOf(const VolumeTextures& v, const Brick& b, const BrickState& s) {
+    std::size_t bytes = b.texels() * v.format.texelBytes;
+    if (s.tags) bytes += b.texels() * (v.tags->type() == VoxelType::UShort ? 2 : 1);
+    return bytes;
+}
+
+void release(VolumeTextures& v, std::size_t i) {
+    BrickState& s = v.bricks[i];
+    if (!s.resident) return;
+    v.residentBytes -= residentBytesOf(v, v.layout.bricks()[i], s);
+    s.data = Texture();
+    s.tags = Texture();
+    s.resident = false;
+}
+
+/// Makes brick i resident, first evicting the least recently used others while the budget
+/// would be exceeded (bricks drawn earlier in this frame may go: their draws are issued). So
+/// a volume whose visible bricks exceed the budget streams them, as the seed's bricking does.
+void makeResident(VolumeTextures& v, std::size_t i, std::uint64_t budget, bool withTags) {
+    BrickState& s = v.bricks[i];
+    if (s.resident && bool(s.tags) != withTags) release(v, i);
+    if (!s.resident) {
+        activateUploadUnit();
+        const Brick& b = v.layout.bricks()[i];
+        const std::size_t need =
+            b.texels() *
+            (v.format.texelBytes + (withTags ? (v.tags->type() == VoxelType::UShort ? 2 : 1) : 0));
+        while (budget > 0 && v.residentBytes + need > budget) {
+            std::size_t victim = v.bricks.size();
+            for (std::size_t j = 0; j < v.bricks.size(); ++j)
+                if (j != i && v.bricks[j].resident &&
+                    (victim == v.bricks.size() || v.bricks[j].lastUse < v.bricks[victim].lastUse))
+                    victim = j;
+            if (victim == v.bricks.size()) break;
+            release(v, victim);
+        }
+        uploadBrick(v, b, s, withTags);
+    }
+    s.lastUse = ++v.useCounter;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Per-frame preparation
+
+void prepareGrid(VolumeTextures& v, const RayCastVolume& volume) {
+    if (v.data) return;
+    v.data = volume.data;
+    v.tags = volume.tags;
+    v.format = dataFormatOf(v.data->type());
+    const auto [lo, hi] = v.data->minMax(); // finite values only
+    v.finiteMin = lo;
+    v.finiteMax = hi;
+    const auto [natLo, natHi] = v.data->naturalRange();
+    v.naturalRange = {natLo, natHi};
+}
+
+void prepareLayout(VolumeTextures& v, const SliceShared& shared, std::uint64_t budget, int guard) {
+    if (v.hasLayout && v.layoutBudget == budget && v.layoutGuard == guard) return;
+    for (std::size_t i = 0; i < v.bricks.size(); ++i)
+        release(v, i);
+    BrickLayout::Limits limits;
+    limits.budgetBytes = budget;
+    limits.maxTextureSize = shared.max3DTextureSize;
+    limits.bytesPerVoxel =
+        v.format.texelBytes + (v.tags ? (v.tags->type() == VoxelType::UShort ? 2 : 1) : 0);
+    limits.guard = guard;
+    v.layout = BrickLayout(v.data->dimensions(), v.data->spacing(), limits);
+    v.bricks.clear();
+    v.bricks.resize(v.layout.bricks().size());
+    measureBricks(v);
+    v.hasLayout = true;
+    v.layoutBudget = budget;
+    v.layoutGuard = guard;
+    v.hasTable = false; // emptiness is decided with the table
+}
+
+void prepareTable(VolumeTextures& v, const RayCastVolume& volume, std::uint64_t key) {
+    if (v.hasTable && v.tableKey == key) return;
+    v.table.build(volume.transferFunctions, v.naturalRange);
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (v.table.rows() > maxSize)
+        throw Error(std::to_string(v.table.rows() - 1) +
+                    " tagged transfer functions apply to one volume; at most " +
+                    std::to_string(maxSize - 1) + " fit its transfer table");
+    if (!v.tableTexture) v.tableTexture = Texture(GL_TEXTURE_2D); // linear, clamped
+    v.tableTexture.image2D(GL_RGBA32F, TransferTable::kWidth, v.table.rows(), GL_RGBA, GL_FLOAT,
+                           v.table.texels().data());
+    if (v.table.rows() > 1) {
+        if (!v.tagRowTexture) {
+            v.tagRowTexture = Texture(GL_TEXTURE_2D);
+            v.tagRowTexture.setFilter(GL_NEAREST, GL_NEAREST);
+        }
+        v.tagRowTexture.image2D(GL_R16UI, TransferTable::kTagMapSide, TransferTable::kTagMapSide,
+                                GL_RED_INTEGER, GL_UNSIGNED_SHORT, v.table.tagRows().data());
+    }
+    const bool tagged = v.tags && v.table.rows() > 1;
+    for (BrickState& s : v.bricks)
+        s.mayEmit = v.table.mayEmit(s.dataMin, s.dataMax, tagged, s.tagMin, s.tagMax);
+    v.hasTable = true;
+    v.tableKey = key;
+    v.hasPreIntegration = false;
+    ++v.totals.transferTableBuilds;
+}
+
+void preparePreIntegration(VolumeTextures& v) {
+    if (v.hasPreIntegration) return;
+    v.preIntegration.build(v.table.function(0));
+    if (!v.preIntegrationTexture) v.preIntegrationTexture = Texture(GL_TEXTURE_2D);
+    v.preIntegrationTexture.image2D(GL_RGBA32F, PreIntegrationTable::kSize,
+                                    PreIntegrationTable::kSize, GL_RGBA, GL_FLOAT,
+                                    v.preIntegration.texels().data());
+    v.hasPreIntegration = true;
+    ++v.totals.preIntegrationBuilds;
+}
+
+/// Whether planeOpacity changes anything: m = 1 everywhere needs no lookup.
+bool planeOpacityMatters(const std::vector<PiecewiseLinear::Point>& points) {
+    return std::any_of(points.begin(), points.end(),
+                       [](const PiecewiseLinear::Point& p) { return p.y != 1.0; });
+}
+
+void preparePlaneOpacity(VolumeTextures& v, const std::vector<PiecewiseLinear::Point>& points) {
+    if (v.planeOpacityTexture && v.planeOpacity == points) return;
+    const PiecewiseLinear m(points);
+    std::vector<float> samples(kPlaneOpacitySize);
+    for (int i = 0; i < kPlaneOpacitySize; ++i)
+        samples[std::size_t(i)] = float(std::max(0.0, m(double(i) / (kPlaneOpacitySize - 1))));
+    if (!v.planeOpacityTexture) {
+        v.planeOpacityTexture = Texture(GL_TEXTURE_1D);
+        v.planeOpacityTexture.setFilter(GL_NEAREST, GL_NEAREST);
+    }
+    v.planeOpacityTexture.image1D(GL_R32F, kPlaneOpacitySize, GL_RED, GL_FLOAT, samples.data());
+    v.planeOpacity = points;
+}
+
+/// Eye depths of the camera's near and far planes, from the projection matrix.
+glm::dvec2 nearFar(const glm::dmat4& p, bool orthographic) {
+    if (orthographic) return {(p[3][2] + 1.0) / p[2][2], (p[3][2] - 1.0) / p[2][2]};
+    return {p[3][2] / (p[2][2] - 1.0), p[3][2] / (p[2][2] + 1.0)};
+}
+
+/// The faces of brick b that lie on the volume box and face the viewer (at `viewer`, or
+/// looking along it when orthographic; local coordinates), as triangles.
+void appendFrontFaces(const Brick& b, const glm::ivec3& grid, const glm::dvec3& viewer,
+                      bool orthographic, std::vector<glm::vec3>& out) {
+    for (int a = 0; a < 3; ++a)
+        for (int side = 0; side < 2; ++side) {
+            const bool onBoundary = side == 0 ? b.index[a] == 0 : b.index[a] == grid[a] - 1;
+            if (!onBoundary) continue;
+            const double c = side == 0 ? b.boxMin[a] : b.boxMax[a];
+            const bool facing = orthographic ? (side == 0 ? viewer[a] > 0.0 : viewer[a] < 0.0)
+                                             : (side == 0 ? viewer[a] < c : viewer[a] > c);
+            if (!facing) continue;
+            const int u = (a + 1) % 3, w = (a + 2) % 3;
+            glm::vec3 corner[4];
+            for (int k = 0; k < 4; ++k) {
+                glm::dvec3 p;
+                p[a] = c;
+                p[u] = (k == 1 || k == 2) ? b.boxMax[u] : b.boxMin[u];
+                p[w] = k >= 2 ? b.boxMax[w] : b.boxMin[w];
+                corner[k] = glm::vec3(p);
+            }
+            for (const int k : {0, 1, 2, 0, 2, 3})
+                out.push_back(corner[k]);
+        }
+}
+
+void checkVolume(const RayCastVolume& volume) {
+    if (!volume.data) throw Error("Volume: no data to render");
+    if (volume.tags) {
+        if (volume.tags->dimensions() != volume.data->dimensions())
+            throw Error("Volume: the tag grid's dimensions differ from the data's");
+        if (!volume.tags->isLabelType())
+            throw Error("Volume: the tag grid must be UByte or UShort");
+    }
+}
+
+} // namespace
+
+void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVolume& volume,
+                        std::uint64_t transferKey, const SlicingSettings& settings,
+                        SlicingStats& stats) {
+    if (action.pass() != RenderPass::Volume) return;
+    const auto started = std::chrono::steady_clock::now();
+    checkVolume(volume);
+    const VolumeGrid& grid = *volume.data;
+    const Mode mode = modeOf(volume.mode);
+
+    activateUploadUnit();
+    SliceShared& shared = action.cache<SliceShared>(sharedCacheKey());
+    if (shared.max3DTextureSize == 0) {
+        glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &shared.max3DTextureSize);
+        shared.max3DTextureSize = std::max(shared.max3DTextureSize, 2);
+    }
+    // Keyed by the grids too: new data (a VolumeData reload) starts a fresh cache and the old
+    // one is dropped after this frame.
+    const std::uint64_t key =
+        std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())) ^
+        (std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.tags.get())) << 1);
+    VolumeTextures& v = action.cache<VolumeTextures>(owner, key);
+    prepareGrid(v, volume);
+
+    const bool lighting = settings.lighting && mode == kDvr;
+    // Lighting, pre-integration and tag-cell splitting sample up to a voxel (or half a slab)
+    // beyond the point drawn: bricks then carry a guard voxel, so seams stay invisible.
+    const bool sampleAround = lighting || settings.preIntegrated || volume.tags;
+    prepareLayout(v, shared, settings.textureBudget, sampleAround ? 1 : 0);
+    prepareTable(v, volume, transferKey);
+    const bool tagged = v.tags && v.table.rows() > 1;
+    const bool preIntegrated = settings.preIntegrated && mode == kDvr && !tagged;
+    if (preIntegrated) preparePreIntegration(v);
+    const bool hasPlaneOpacity = mode == kDvr && planeOpacityMatters(volume.planeOpacity);
+    if (hasPlaneOpacity) preparePlaneOpacity(v, volume.planeOpacity);
+    if (v.filterNearest != settings.nearest) {
+        v.filterNearest = settings.nearest;
+        const GLenum filter = v.filterNearest ? GL_NEAREST : GL_LINEAR;
+        for (BrickState& s : v.bricks)
+            if (s.resident) s.data.setFilter(filter, filter);
+    }
+
+    // The view in the volume's local coordinates.
+    const RenderView& view = action.view();
+    const glm::dmat4 model = volume.model;
+    const glm::dmat4 modelView = view.view * model;
+    const glm::dmat4 eyeToLocal = glm::inverse(modelView);
+    const glm::dmat3 eyeToLocal3(eyeToLocal);
+    const glm::dvec3 halfExtent = 0.5 * grid.extent();
+    const glm::dvec2 boxDepth = ProxyPlaneCutter::depthRange(-halfExtent, halfExtent, modelView);
+    const glm::dvec2 clipDepth = nearFar(view.projection, view.orthographic);
+    const double L0 = grid.smallestSpacing();
+
+    // Plane count: numPlanes, or 2 per voxel (spacing L0 / 2 in local units along the view
+    // axis); a quarter while interacting. Opacity correction makes both the same image.
+    const double localPerEyeAxis = glm::length(eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0));
+    const double depthExtent = boxDepth.y - boxDepth.x;
+    const double autoSpacing = 0.5 * L0 / localPerEyeAxis;
+    long still = settings.numPlanes > 0 ? long(settings.numPlanes)
+                                        : long(std::ceil(depthExtent / autoSpacing));
+    still = std::clamp(still, 1L, long(kMaxPlanes));
+    long planes = still;
+    if (action.isInteractive())
+        planes = settings.interactivePlanes > 0 ? long(settings.interactivePlanes)
+                                                : std::max(1L, (still + 3) / 4);
+    planes = std::clamp(planes, 1L, long(kMaxPlanes));
+    const PlaneLayout layout =
+        PlaneLayout::over(boxDepth, std::max(depthExtent, 1e-12) / double(planes) * (1.0 + 1e-9));
+
+    SlicingStats frame;
+    frame.bricksTotal = int(v.bricks.size());
+    frame.brickGrid = v.layout.grid();
+    frame.brickTexels = v.layout.largestTexture();
+    frame.planes = layout.count;
+    frame.planeSpacing = layout.spacing;
+
+    // The clip planes in local coordinates.
+    if (volume.clipPlanes.size() > std::size_t(kMaxClipPlanes))
+        throw Error(std::to_string(volume.clipPlanes.size()) +
+                    " ClipPlanes are in scope of a Volume; it clips with at most " +
+                    std::to_string(kMaxClipPlanes));
+    std::vector<glm::dvec4> localPlanes;
+    localPlanes.reserve(volume.clipPlanes.size());
+    for (const glm::dvec4& w : volume.clipPlanes) {
+        // n_w . (M p) >= d_w  <=>  (M^T n_w) . p >= d_w - n_w . t
+        const glm::dvec3 n(w);
+        const glm::dvec3 local = glm::transpose(glm::dmat3(model)) * n;
+        localPlanes.emplace_back(local, w.w - glm::dot(n, glm::dvec3(model[3])));
+    }
+
+    // Cut the bricks that can contribute, back to front.
+    const glm::dvec3 viewer = view.orthographic
+                                  ? eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0)
+                                  : glm::dvec3(eyeToLocal * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    v.layout.backToFront(viewer, view.orthographic, v.order);
+    const glm::dvec3 margin(0.5 * L0); // see uOwnMin in the shader
+    v.vertices.clear();
+    for (const int i : v.order) {
+        BrickState& s = v.bricks[std::size_t(i)];
+        s.count = 0;
+        s.faceCount = 0;
+        if (mode == kDvr && !s.mayEmit) {
+            ++frame.bricksSkipped;
+            continue;
+        }
+        const Brick& b = v.layout.bricks()[std::size_t(i)];
+        ProxyPlaneCutter::cutInto(b.boxMin - margin, b.boxMax + margin, modelView, layout,
+                                  clipDepth.x, v.slices);
+        s.first = GLint(v.vertices.size());
+        s.count = GLsizei(v.slices.vertices.size());
+        v.vertices.insert(v.vertices.end(), v.slices.vertices.begin(), v.slices.vertices.end());
+        frame.sliceTriangles += v.slices.vertices.size() / 3;
+        s.faceFirst = GLint(v.vertices.size());
+        appendFrontFaces(b, v.layout.grid(), viewer, view.orthographic, v.vertices);
+        // Clip planes that rays cross into the kept side bound the visible part too.
+        for (const glm::dvec4& plane : localPlanes) {
+            const glm::dvec3 n(plane);
+            const bool entering =
+                view.orthographic ? glm::dot(n, viewer) > 0.0 : glm::dot(n, viewer) < plane.w;
+            if (entering)
+                ProxyPlaneCutter::appendPlanePolygon(b.boxMin, b.boxMax, n, plane.w, v.vertices);
+        }
+        s.faceCount = GLsizei(v.vertices.size()) - s.faceFirst;
+    }
+
+    const auto prepared = std::chrono::steady_clock::now();
+    frame.cpuMilliseconds = std::chrono::duration<double, std::milli>(prepared - started).count();
+    if (!v.vertices.empty()) {
+        if (!v.vertexBuffer) {
+            v.vertexBuffer = Buffer(GL_ARRAY_BUFFER);
+            v.vertexArray = VertexArray::create();
+            v.vertexArray.setAttribute(0, v.vertexBuffer, 3);
+        }
+        v.vertexBuffer.setData(v.vertices, GL_STREAM_DRAW);
+
+        // Uniforms of this volume and frame.
+        const Program& program = shared.sliceProgram(mode, tagged, lighting, preIntegrated);
+        program.use();
+        program.set("uModelView", glm::mat4(modelView));
+        program.set("uProjection", glm::mat4(view.projection));
+        program.set("uHalfExtent", glm::vec3(halfExtent));
+        program.set("uInvSpacing", glm::vec3(1.0 / grid.spacing()));
+        program.set("uVoxelCount", glm::vec3(grid.dimensions()));
+        program.set("uDataScale", v.format.scale);
+        program.set("uDataOffset", v.format.offset);
+        program.set("uEyeLocal", glm::vec3(eyeToLocal * glm::dvec4(0.0, 0.0, 0.0, 1.0)));
+        program.set("uViewDirLocal",
+                    glm::vec3(glm::normalize(eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0))));
+        // Eye depth is -z in eye coordinates: an affine function of the local point.
+        program.set("uDepthPlane", glm::vec4(-modelView[0][2], -modelView[1][2], -modelView[2][2],
+                                             -modelView[3][2]));
+        program.set("uOrthographic", view.orthographic ? 1 : 0);
+        program.set("uPlaneSpacing", float(layout.spacing));
+        program.set("uLayoutNear", float(layout.nearDepth));
+        program.set("uFacePass", 0);
+        program.set("uInvL0", float(1.0 / L0));
+        program.set("uNear", float(clipDepth.x));
+        program.set("uFar", float(clipDepth.y));
+        program.set("uHasPlaneOpacity", hasPlaneOpacity ? 1 : 0);
+        program.set("uBoxNear", float(boxDepth.x));
+        program.set("uBoxFar", float(std::max(boxDepth.y, boxDepth.x + 1e-12)));
+
+        program.set("uClipPlaneCount", int(localPlanes.size()));
+        if (!localPlanes.empty()) {
+            std::vector<glm::vec4> planes(localPlanes.begin(), localPlanes.end());
+            program.set("uClipPlanes", planes.data(), int(planes.size()));
+        }
+
+        glm::vec2 regionOpacity(1.0f), regionWeight(0.0f);
+        glm::vec3 regionColor[2] = {glm::vec3(1.0f), glm::vec3(1.0f)};
+        program.set("uHasBoxClip", volume.boxClip ? 1 : 0);
+        if (volume.boxClip) {
+            const RayCastBoxClip& b = *volume.boxClip;
+            const glm::dmat4 localToBox =
+                b.model ? glm::inverse(*b.model) * model : glm::dmat4(1.0);
+            program.set("uLocalToBox", glm::mat4(localToBox));
+            program.set("uBoxMin", glm::vec3(glm::min(b.origin, b.origin + b.extent)));
+            program.set("uBoxMax", glm::vec3(glm::max(b.origin, b.origin + b.extent)));
+            regionOpacity = {float(std::max(0.0, b.outsideOpacity)),
+                             float(std::max(0.0, b.insideOpacity))};
+            regionWeight = {float(std::clamp(b.outsideColorWeight, 0.0, 1.0)),
+                            float(std::clamp(b.insideColorWeight, 0.0, 1.0))};
+            regionColor[0] = glm::vec3(b.outsideColor);
+            regionColor[1] = glm::vec3(b.insideColor);
+        }
+        program.set("uRegionOpacity", regionOpacity);
+        program.set("uRegionWeight", regionWeight);
+        program.set("uRegionColor", regionColor, 2);
+
+        // MIP/MINIP: the key's low bits carry row * 2 + region.
+        int infoBits = 0;
+        if (tagged || volume.boxClip)
+            while ((1 << infoBits) < 2 * v.table.rows())
+                ++infoBits;
+        const GLuint infoMask = (1u << infoBits) - 1u;
+        glUniform1ui(program.uniformLocation("uInfoMask"), infoMask);
+
+        if (lighting) {
+            std::vector<SceneLight> lights;
+            action.lightsInScope(lights);
+            if (lights.size() > std::size_t(kMaxLights))
+                throw Error(std::to_string(lights.size()) +
+                            " lights are in scope of a Volume; at most " +
+                            std::to_string(kMaxLights) + " light it");
+            std::vector<glm::vec4> vectors;
+            std::vector<glm::vec3> colors;
+            for (const SceneLight& l : lights) {
+                vectors.push_back(l.vector);
+                colors.push_back(l.color);
+            }
+            program.set("uModel", glm::mat4(model));
+            program.set("uNormalMatrix",
+                        glm::mat3(glm::transpose(glm::inverse(glm::dmat3(model)))));
+            program.set("uViewer", glm::vec4(view.viewer));
+            program.set("uLightCount", int(lights.size()));
+            if (!lights.empty()) {
+                program.set("uLightVector", vectors.data(), int(vectors.size()));
+                program.set("uLightColor", colors.data(), int(colors.size()));
+            }
+            program.set("uAmbient", kAmbientIntensity);
+            program.set("uSpecular", settings.specular);
+            program.set("uShininess", settings.shininess * 128.0f);
+        }
+
+        // Opaque geometry (drawn by the shape renderer in the opaque pass) ends rays: the
+        // slices read a copy of its depth. Without any, the copy and the reads are skipped.
+        const bool hasOpaque = action.shapeRenderer().drawsLastFrame() > 0;
+        program.set("uHasOpaqueDepth", hasOpaque ? 1 : 0);
+        if (hasOpaque) {
+            shared.copyOpaqueDepth(action.target());
+            shared.opaqueDepth.bind(kOpaqueDepthUnit);
+        }
+        v.tableTexture.bind(kTableUnit);
+        if (tagged) v.tagRowTexture.bind(kTagRowUnit);
+        if (preIntegrated) v.preIntegrationTexture.bind(kPreIntegratedUnit);
+        if (hasPlaneOpacity) v.planeOpacityTexture.bind(kPlaneOpacityUnit);
+
+        // Projection modes gather into their own target, then composite once.
+        if (mode == kMip || mode == kMinip) {
+            shared.beginProjection(action.target(), 0, mode == kMip ? 0.0f : 4.0f);
+            glBlendEquation(mode == kMip ? GL_MAX : GL_MIN);
+        } else if (mode == kAverage) {
+            shared.beginProjection(action.target(), 1, 0.0f);
+            glBlendFunc(GL_ONE, GL_ONE);
+        }
+
+        v.vertexArray.bind();
+        for (const int i : v.order) {
+            BrickState& s = v.bricks[std::size_t(i)];
+            if (s.count == 0 && s.faceCount == 0) continue;
+            makeResident(v, std::size_t(i), settings.textureBudget, tagged);
+            const Brick& b = v.layout.bricks()[std::size_t(i)];
+            s.data.bind(kDataUnit);
+            if (tagged) s.tags.bind(kTagUnit);
+            program.set("uTexOrigin", glm::vec3(b.firstVoxel));
+            program.set("uTexSize", glm::vec3(b.voxelCount));
+            program.set("uOwnMin", glm::vec3(b.boxMin));
+            program.set("uOwnMax", glm::vec3(b.boxMax));
+            glDrawArrays(GL_TRIANGLES, s.first, s.count);
+            if (s.faceCount > 0) {
+                // No ray has both plane and face fragments, so this order is as good as any.
+                program.set("uFacePass", 1);
+                glDrawArrays(GL_TRIANGLES, s.faceFirst, s.faceCount);
+                program.set("uFacePass", 0);
+            }
+            ++frame.bricksDrawn;
+        }
+
+        if (mode != kDvr) {
+            action.target().bind();
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            const Program& composite = shared.compositeProgram(mode);
+            composite.use();
+            glUniform1ui(composite.uniformLocation("uInfoMask"), infoMask);
+            composite.set("uRegionColor", regionColor, 2);
+            composite.set("uRegionWeight", regionWeight);
+            shared.projected[mode == kAverage ? 1 : 0].bind(kProjectedUnit);
+            if (!shared.emptyVertexArray) shared.emptyVertexArray = VertexArray::create();
+            shared.emptyVertexArray.bind();
+            glDisable(GL_DEPTH_TEST);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glEnable(GL_DEPTH_TEST);
+        }
+        VertexArray::unbind();
+        glActiveTexture(GL_TEXTURE0);
+    }
+
+    for (const BrickState& s : v.bricks)
+        if (s.resident) ++frame.bricksResident;
+    frame.textureBytes = v.residentBytes;
+    ++v.totals.frames;
+    frame.frames = v.totals.frames;
+    frame.brickUploads = v.totals.brickUploads;
+    frame.uploadedBytes = v.totals.uploadedBytes;
+    frame.transferTableBuilds = v.totals.transferTableBuilds;
+    frame.preIntegrationBuilds = v.totals.preIntegrationBuilds;
+    frame.submitMilliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - prepared)
+            .count();
+    stats = frame;
+}
+
+} // namespace volsg

@@ -1,0 +1,83 @@
+#pragma once
+// The GL renderer of the Volume node: 3D-texture slicing (Cabral et al. 1994; the seed's
+// Inventor Volume node) measured against SCENE-FORMAT.md section 4.
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include <volsg/reference/ReferenceRayCaster.h>
+#include <volsg/slicing/SlicingStats.h>
+
+namespace volsg {
+
+class Node;
+class RenderAction;
+
+/// The Volume node's fields that are not part of the rendering model (they choose speed and
+/// method, not meaning).
+struct SlicingSettings {
+    int numPlanes = 0;         ///< planes over the box's depth for a still frame; 0 = automatic
+    int interactivePlanes = 0; ///< planes while interacting; 0 = a quarter of the still count
+    bool nearest = false;      ///< nearest-neighbour data instead of trilinear
+    bool preIntegrated = false;
+    bool lighting = false;
+    std::uint64_t textureBudget = 0; ///< bytes of 3D textures; 0 = only the driver's size limit
+    glm::vec3 specular{0.0f};        ///< lighting: the Material's specular colour
+    float shininess = 0.2f;          ///< lighting: the Material's shininess (Inventor, 0..1)
+};
+
+/// Draws one volume in the Volume pass of a RenderAction: view-aligned proxy planes cut from
+/// each brick with one shared PlaneLayout, back to front, into the float target over what the
+/// opaque pass drew, with its depth test. lib/volsg/slicing/README.md has the measurements.
+///
+/// What a slice fragment does (DVR), at the point p of plane k on a pixel's ray:
+/// - data d = scale * texel + offset from the brick's 3D texture (trilinear, or nearest), the
+///   row of its tag from the tag texture (texelFetch, nearest) and the tag -> row map, then
+///   v = normalise(d, the row's dataRange) in float, then (C, tau L0) from the row
+///   (TransferTable: tau L0 = -ln(1 - min(A, 1 - 1e-6)) baked in double);
+/// - the slab it stands for: half the way to the neighbouring planes along the ray, in LOCAL
+///   units (plane spacing / |cos| of the ray to the view axis, through the inverse model-view),
+///   extended to the boundary where the neighbour's point lies outside the box, in front of
+///   the near plane, behind opaque geometry or on the removed side of a clip plane, so the
+///   slabs tile every ray's visible part of the volume exactly; front faces of the box and
+///   entered clip planes stand for the rays no plane crosses (silhouette slivers);
+/// - tagged: the slab split at its tag cell's faces, each part with its own tag; BoxClip: the
+///   slab split at the box faces, each part with its region's opacity and colour blend;
+///   planeOpacity m(t) multiplies tau; alpha = 1 - e^-(tau ds) (a series for small values);
+///   shaded when lighting; output (C alpha, alpha), blended (ONE, ONE_MINUS_SRC_ALPHA) in float.
+/// - ClipPlanes (all of them, up to 32) discard exactly where n.p < d.
+///
+/// MIP / MINIP: the extreme v over the slab (at p and where the ray crosses the nearest
+/// voxel-centre planes), as v + 1 with the sample's row and BoxClip region in its lowest
+/// mantissa bits, max (min) blended into an R32F target sharing the opaque depth; then one
+/// composite pass draws C(v) A(v) + (1 - A(v)) behind. The bits hold row * 2 + region; with R
+/// rows (1 + tagged transfer functions) and a BoxClip they cost ceil(log2(2R)) bits, so v is
+/// truncated to 2^-(23 - bits) (exact without tags or BoxClip; 2^-19 with 4 tagged functions).
+/// Equal values after truncation keep the larger (MIP) / smaller (MINIP) row. AVERAGE:
+/// (v ds, ds) added into an RG32F target, then the mean through the default function.
+///
+/// Lighting: central differences of v on the fly (6 extra fetches per fragment, no extra
+/// texture memory and nothing to rebuild when the data changes; bricks then carry one guard
+/// voxel so differences are exact across seams). The reference does not shade: lit images are
+/// compared only for sanity. Pre-integration: see PreIntegrationTable; used for DVR of
+/// volumes without tagged transfer functions (tagged ones fall back to post-classification:
+/// the table would need one 2D slice per pair of rows).
+///
+/// Several Volume nodes are drawn one after the other in traversal order: correct where they
+/// do not overlap along a ray; where they overlap, the later one is composited over the
+/// earlier one as a whole (not merged per sample as the reference does).
+class VolumeSlicer {
+public:
+    /// Draws `volume` (its data, tags, model, transfer functions, mode, planeOpacity, BoxClip,
+    /// and world clip planes, as the reference ray caster takes them) if this is the Volume
+    /// pass. `owner` keys the GPU cache (textures, tables) in the action's NodeCache;
+    /// `transferKey` must change whenever the transfer functions change: the tables are rebuilt
+    /// only then, and the volume textures never are. Lights come from the action. Throws Error
+    /// for invalid input (mismatched tag grid, too many rows, lights or clip planes).
+    static void draw(RenderAction& action, const Node& owner, const RayCastVolume& volume,
+                     std::uint64_t transferKey, const SlicingSettings& settings,
+                     SlicingStats& stats);
+};
+
+} // namespace volsg

@@ -1,0 +1,117 @@
+// The Volume node gathers its state (data, transfer functions per tag, BoxClip, ClipPlanes,
+// transform) into the rendering model's description and hands it to the slicer.
+#include <volsg/nodes/Volume.h>
+
+#include <map>
+
+#include <volsg/actions/BoundingBoxAction.h>
+#include <volsg/nodes/BoxClip.h>
+#include <volsg/nodes/Material.h>
+#include <volsg/nodes/TransferFunction.h>
+#include <volsg/nodes/VolumeData.h>
+#include <volsg/render/RenderAction.h>
+#include <volsg/slicing/VolumeSlicer.h>
+#include <volsg/volume/VolumeGrid.h>
+
+namespace volsg {
+
+const EnumValues Volume::renderModeNames{
+    {"DVR", DVR}, {"MIP", MIP}, {"MINIP", MINIP}, {"AVERAGE", AVERAGE}};
+const EnumValues Volume::interpolationNames{{"LINEAR", LINEAR}, {"NEAREST", NEAREST}};
+
+namespace {
+
+VolumeRenderMode renderModeOf(int mode) {
+    switch (mode) {
+    case Volume::MIP:
+        return VolumeRenderMode::MIP;
+    case Volume::MINIP:
+        return VolumeRenderMode::MINIP;
+    case Volume::AVERAGE:
+        return VolumeRenderMode::AVERAGE;
+    default:
+        return VolumeRenderMode::DVR;
+    }
+}
+
+/// FNV-1a style mixing of a value into a running key.
+std::uint64_t mix(std::uint64_t key, std::uint64_t value) {
+    return (key ^ value) * 0x100000001b3ULL;
+}
+
+} // namespace
+
+void Volume::render(RenderAction& action) {
+    if (action.pass() != RenderPass::Volume) return;
+    const State& state = action.state();
+    const VolumeData* data = state.nearestNode<VolumeData>();
+    if (!data) return; // nothing to show
+
+    RayCastVolume volume;
+    volume.data = data->grid();
+    if (!volume.data) return;
+    volume.tags = data->tagGrid();
+    volume.model = state.modelMatrix();
+    volume.mode = renderModeOf(renderMode());
+
+    // The nearest TransferFunction of each tag applies. The key follows the nodes' versions,
+    // so the slicer rebuilds its tables exactly when one of them (or the set) changes.
+    std::map<int, const TransferFunction*> byTag;
+    for (const StateEntry& e : state.entries())
+        if (e.node->isA<TransferFunction>()) {
+            const auto* tf = static_cast<const TransferFunction*>(e.node);
+            byTag[tf->tag()] = tf;
+        }
+    std::uint64_t transferKey = 0xcbf29ce484222325ULL;
+    for (const auto& [tag, tf] : byTag) {
+        volume.transferFunctions.emplace(tag, tf->function());
+        transferKey = mix(transferKey, std::uint64_t(std::int64_t(tag)));
+        transferKey = mix(transferKey, std::uint64_t(reinterpret_cast<std::uintptr_t>(tf)));
+        transferKey = mix(transferKey, tf->version());
+    }
+
+    for (const glm::vec2& p : planeOpacity.getValues())
+        volume.planeOpacity.push_back({double(p.x), double(p.y)});
+    if (const StateEntry* e = state.nearest<BoxClip>()) {
+        const auto& b = static_cast<const BoxClip&>(*e->node);
+        RayCastBoxClip clip;
+        clip.origin = glm::dvec3(b.origin());
+        clip.extent = glm::dvec3(b.extent());
+        clip.model = e->model; // the box is in the BoxClip's own coordinates
+        clip.insideOpacity = b.insideOpacity();
+        clip.outsideOpacity = b.outsideOpacity();
+        clip.insideColor = glm::dvec3(b.insideColor());
+        clip.insideColorWeight = b.insideColorWeight();
+        clip.outsideColor = glm::dvec3(b.outsideColor());
+        clip.outsideColorWeight = b.outsideColorWeight();
+        volume.boxClip = clip;
+    }
+    action.clipPlanesInScope(volume.clipPlanes);
+
+    SlicingSettings settings;
+    settings.numPlanes = numPlanes();
+    settings.interactivePlanes = interactivePlanes();
+    settings.nearest = interpolation() == NEAREST;
+    settings.preIntegrated = preIntegrated();
+    settings.lighting = lighting();
+    settings.textureBudget = textureBudget();
+    if (const Material* m = state.nearestNode<Material>()) {
+        if (!m->specularColor.empty()) settings.specular = m->specularColor[0];
+        if (!m->shininess.empty()) settings.shininess = m->shininess[0];
+    }
+    VolumeSlicer::draw(action, *this, volume, transferKey, settings, slicingStats_);
+}
+
+void Volume::getBoundingBox(BoundingBoxAction& action) {
+    const VolumeData* data = action.state().nearestNode<VolumeData>();
+    if (!data) return;
+    const ref_ptr<const VolumeGrid> grid = data->grid();
+    if (!grid) return;
+    const glm::dvec3 half = 0.5 * grid->extent();
+    Box3 box;
+    box.extendBy(-half);
+    box.extendBy(half);
+    action.extendByLocal(box);
+}
+
+} // namespace volsg

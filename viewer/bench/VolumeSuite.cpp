@@ -1,0 +1,279 @@
+#include "VolumeSuite.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+#include "ImageError.h"
+#include "ReferenceViews.h"
+#include <volsg/core/Error.h>
+#include <volsg/io/SceneReader.h>
+#include <volsg/nodes/Volume.h>
+#include <volsg/render/Renderer.h>
+
+namespace volsg::bench {
+
+namespace {
+
+constexpr const char* kVolumeName = "SUITE_VOLUME";
+
+/// Opacity of a slab L0 thick, given for side 64, for a volume of `side` voxels in the same
+/// box: L0 scales by 64 / side.
+double opacityFor(double alphaAt64, int side) {
+    return 1.0 - std::pow(1.0 - alphaAt64, 64.0 / double(side));
+}
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+    return buffer;
+}
+
+/// Header, camera and light shared by every suite scene: slightly above the equator, far
+/// enough that the box's bounding sphere (radius about sqrt(3)) fits at every orbit angle.
+std::string sceneStart(const std::string& name) {
+    return "#Inventor V2.1 ascii\n# volsg-bench volume suite: " + name +
+           "\nSeparator {\n"
+           "  PerspectiveCamera { position 0 1.2 4 orientation 1 0 0 -0.2914567944778671 "
+           "heightAngle 0.9 nearDistance 2 farDistance 6.5 focalDistance 4.18 }\n";
+}
+
+std::string volumeNode() {
+    return std::string("  DEF ") + kVolumeName + " Volume { }\n}\n";
+}
+
+Volume* findSuiteVolume(Node& node) {
+    if (node.getName() == kVolumeName && node.isA<Volume>()) return static_cast<Volume*>(&node);
+    if (auto* children = node.children())
+        for (const auto& child : *children)
+            if (child)
+                if (Volume* v = findSuiteVolume(*child)) return v;
+    return nullptr;
+}
+
+bool sameImages(const std::vector<Image>& a, const std::vector<Image>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].pixels != b[i].pixels) return false;
+    return true;
+}
+
+struct SlicingSetting {
+    double planesPerVoxel;
+    bool preIntegrated;
+    bool interactive;
+};
+
+std::string settingText(const SlicingSetting& s) {
+    return format("%g planes/voxel", s.planesPerVoxel) +
+           (s.interactive ? ", interactive" : ", still") +
+           (s.preIntegrated ? ", pre-integrated" : "");
+}
+
+std::string seriesOf(const SlicingSetting& s) {
+    return std::string("slicing ") + (s.interactive ? "interactive" : "still") +
+           (s.preIntegrated ? " pre-integrated" : "");
+}
+
+/// Times the rotating views with one setting of the Volume node and measures the error views.
+BenchRow measureSlicing(Node& root, Volume& volume, const SuiteScene& scene,
+                        const SlicingSetting& setting, const VolumeSuiteSettings& st,
+                        const OrbitViews& views, const ReferenceImages& reference,
+                        std::vector<Image>& images) {
+    BenchRow row;
+    row.scene = scene.name;
+    row.path = "slicing";
+    row.setting = settingText(setting);
+    row.series = seriesOf(setting);
+    row.pointLabel = format("%g", setting.planesPerVoxel);
+    images.clear();
+
+    const glm::dvec3 dims = glm::dvec3(st.side);
+    volume.numPlanes = int(std::ceil(setting.planesPerVoxel * glm::length(dims)));
+    volume.interactivePlanes = 0;
+    volume.preIntegrated = setting.preIntegrated;
+    RenderOptions options;
+    options.width = st.width;
+    options.height = st.height;
+    options.background = st.background;
+    options.interactive = setting.interactive;
+    try {
+        const std::size_t rssBefore = residentBytes();
+        Renderer renderer;
+        options.camera = views.cameras[0];
+        renderer.render(root, options); // warm-up: uploads and shader builds are not frames
+        Samples samples;
+        std::size_t next = 0;
+        for (std::size_t i = 0; i < views.cameras.size(); ++i) {
+            options.camera = views.cameras[i];
+            Image image;
+            samples.ms.push_back(timeMs([&] { image = renderer.render(root, options); }));
+            if (next < views.errorIndices.size() && views.errorIndices[next] == int(i)) {
+                images.push_back(std::move(image));
+                ++next;
+            }
+        }
+        row.ms = samples.median();
+        row.frames = int(samples.ms.size());
+        ImageError error;
+        for (std::size_t i = 0; i < images.size(); ++i)
+            error.add(images[i], reference.images[i]);
+        row.hasError = !images.empty();
+        row.rmse = error.rmse();
+        row.psnr = error.psnr();
+        row.maxAbs = error.maxAbs();
+        row.errorFrames = int(images.size());
+        if (volume.slicingStats().textureBytes > 0) {
+            row.memoryBytes = volume.slicingStats().textureBytes;
+            row.memoryKind = "texture";
+        } else {
+            const std::size_t rssAfter = residentBytes();
+            row.memoryBytes = rssAfter > rssBefore ? rssAfter - rssBefore : 0;
+            row.memoryKind = "rss";
+        }
+    } catch (const Error& e) {
+        row.available = false;
+        row.note = e.what();
+        images.clear();
+    }
+    return row;
+}
+
+} // namespace
+
+std::vector<SuiteScene> volumeSuiteScenes(int side) {
+    const double n = side;
+    const double spacing = 2.0 / n; // every box about [-1, 1]^3
+    std::vector<SuiteScene> scenes;
+
+    // Marschner-Lobb keeps its own spacing 2/(n-1): the signal's coordinates.
+    const std::string ml =
+        format("  VolumeData { generator MARSCHNER_LOBB dimensions %g %g %g }\n", n, n, n);
+    scenes.push_back({format("marschner-lobb-%g-smooth", n),
+                      sceneStart("Marschner-Lobb, smooth transfer function") + ml +
+                          "  TransferFunction {\n"
+                          "    red [ 0 0.1, 0.5 0.9, 1 1 ]  green [ 0 0.3, 0.5 0.6, 1 0.9 ]  "
+                          "blue [ 0 1, 0.5 0.4, 1 0.1 ]\n" +
+                          format("    alpha [ 0 0, 1 %.6g ]\n  }\n", opacityFor(0.06, side)) +
+                          volumeNode()});
+    scenes.push_back({format("marschner-lobb-%g-spiky", n),
+                      sceneStart("Marschner-Lobb, spiky transfer function (alpha peak 0.05 wide)") +
+                          ml +
+                          "  TransferFunction {\n"
+                          "    red [ 0 1 ]  green [ 0 0.6 ]  blue [ 0 0.2 ]\n" +
+                          format("    alpha [ 0 0, 0.475 0, 0.5 %.6g, 0.525 0, 1 0 ]\n  }\n",
+                                 opacityFor(0.6, side)) +
+                          volumeNode()});
+    scenes.push_back({format("ramp16-%g", n),
+                      sceneStart("16-bit ramp through a narrow data window") +
+                          format("  VolumeData { generator RAMP16 dimensions %g %g %g ", n, n, n) +
+                          format("spacing %.9g %.9g %.9g }\n", spacing, spacing, spacing) +
+                          "  TransferFunction {\n"
+                          "    dataRange 30000 36000\n"
+                          "    red [ 0 1, 1 0.2 ]  green [ 0 0.8, 1 0.5 ]  blue [ 0 0.1, 1 1 ]\n" +
+                          format("    alpha [ 0 0, 1 %.6g ]\n  }\n", opacityFor(0.08, side)) +
+                          volumeNode()});
+    scenes.push_back(
+        {format("labelled-%g", n),
+         sceneStart("labelled volume, one transfer function per tag") +
+             format("  VolumeData { generator LABELLED dimensions %g %g %g ", n, n, n) +
+             format("spacing %.9g %.9g %.9g }\n", spacing, spacing, spacing) +
+             format("  TransferFunction { red [ 0 0.7 ] green [ 0 0.7 ] blue [ 0 0.7 ] "
+                    "alpha [ 0 0, 1 %.6g ] }\n",
+                    opacityFor(0.01, side)) +
+             format("  TransferFunction { tag 1 red [ 0 1 ] green [ 0 0.2 ] blue [ 0 0.1 ] "
+                    "alpha [ 0 0, 1 %.6g ] }\n",
+                    opacityFor(0.15, side)) +
+             format("  TransferFunction { tag 2 red [ 0 0.2 ] green [ 0 0.9 ] blue [ 0 0.3 ] "
+                    "alpha [ 0 0, 0.3 0, 1 %.6g ] }\n",
+                    opacityFor(0.05, side)) +
+             format("  TransferFunction { tag 3 red [ 0 0.2 ] green [ 0 0.4 ] blue [ 0 1 ] "
+                    "alpha [ 0 %.6g ] }\n",
+                    opacityFor(0.03, side)) +
+             volumeNode()});
+    return scenes;
+}
+
+std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
+    std::vector<BenchRow> rows;
+    auto emit = [&](BenchRow row) {
+        printRow(row);
+        rows.push_back(std::move(row));
+    };
+    auto context = Context::createOffscreen(st.backend);
+    printHeader();
+    for (const SuiteScene& scene : volumeSuiteScenes(st.side)) {
+        if (!st.keepDir.empty()) {
+            std::filesystem::create_directories(st.keepDir);
+            const auto file = std::filesystem::path(st.keepDir) / (scene.name + ".iv");
+            std::ofstream(file) << scene.text;
+        }
+        ref_ptr<Node> root = readSceneFromString(scene.text, scene.name + ".iv");
+        Volume* volume = findSuiteVolume(*root);
+        if (!volume) throw Error("suite scene " + scene.name + " has no " + kVolumeName);
+
+        RenderOptions options;
+        options.width = st.width;
+        options.height = st.height;
+        options.background = st.background;
+        const OrbitViews views = makeOrbitViews(*root, options, st.frames, st.errorFrames);
+
+        // The truth: the reference at its default tolerance on the error views.
+        RayCastOptions truthOptions;
+        const ReferenceImages truth = renderReferenceViews(*root, options, views, truthOptions);
+        BenchRow truthRow;
+        truthRow.scene = scene.name;
+        truthRow.path = "reference";
+        truthRow.setting = format("tolerance %g (the truth)", truthOptions.tolerance);
+        truthRow.ms = truth.ms.median();
+        truthRow.frames = int(truth.ms.ms.size());
+        truthRow.memoryBytes = truth.rssDelta;
+        truthRow.memoryKind = "rss";
+        truthRow.note = format("error bound %.2g", truth.errorBound) +
+                        (truth.converged ? "" : ", not converged everywhere");
+        emit(truthRow);
+        for (double tolerance : {1e-3, 1e-2}) {
+            RayCastOptions coarse;
+            coarse.tolerance = tolerance;
+            const ReferenceImages images = renderReferenceViews(*root, options, views, coarse);
+            ImageError error;
+            for (std::size_t i = 0; i < images.images.size(); ++i)
+                error.add(images.images[i], truth.images[i]);
+            BenchRow row = truthRow;
+            row.setting = format("tolerance %g", tolerance);
+            row.ms = images.ms.median();
+            row.hasError = !images.images.empty();
+            row.rmse = error.rmse();
+            row.psnr = error.psnr();
+            row.maxAbs = error.maxAbs();
+            row.errorFrames = int(images.images.size());
+            row.memoryBytes = images.rssDelta;
+            row.note = format("error bound %.2g", images.errorBound);
+            row.series = "reference";
+            row.pointLabel = format("tol %g", tolerance);
+            emit(row);
+        }
+
+        for (bool interactive : {false, true})
+            for (double planes : {0.5, 1.0, 2.0, 4.0}) {
+                std::vector<Image> plain, preIntegrated;
+                BenchRow off = measureSlicing(*root, *volume, scene, {planes, false, interactive},
+                                              st, views, truth, plain);
+                emit(off);
+                BenchRow on = measureSlicing(*root, *volume, scene, {planes, true, interactive}, st,
+                                             views, truth, preIntegrated);
+                // Bit-identical images with and without: the node does not pre-integrate.
+                if (on.available && off.available && !plain.empty() &&
+                    sameImages(plain, preIntegrated)) {
+                    on.available = false;
+                    on.note = "preIntegrated gives the same image as without: not supported";
+                }
+                emit(on);
+            }
+    }
+    return rows;
+}
+
+} // namespace volsg::bench
