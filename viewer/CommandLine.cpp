@@ -11,7 +11,9 @@ namespace volsg::cli {
 
 Arguments::Arguments(int argc, char** argv) : args_(argv + 1, argv + argc) {}
 
-std::string Arguments::take() { return args_[next_++]; }
+std::string Arguments::take() {
+    return args_[next_++];
+}
 
 std::string Arguments::value(std::string_view option) {
     if (empty()) throw Error("option " + std::string(option) + " needs a value");

@@ -25,8 +25,8 @@ private:
     std::size_t next_ = 0;
 };
 
-glm::ivec2 parseSize(const std::string& text);       ///< "WxH"
-glm::vec3 parseColor(const std::string& text);       ///< "R,G,B" in [0,1]
-std::string extensionOf(const std::string& path);    ///< lower case, with the dot
+glm::ivec2 parseSize(const std::string& text);    ///< "WxH"
+glm::vec3 parseColor(const std::string& text);    ///< "R,G,B" in [0,1]
+std::string extensionOf(const std::string& path); ///< lower case, with the dot
 
 } // namespace volsg::cli

@@ -32,8 +32,12 @@ Run run(const std::string& command) {
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, ss.str()};
 }
 
-std::string tool(const char* name) { return std::string(VOLSG_BINARY_DIR) + "/viewer/" + name; }
-std::string example(const char* name) { return std::string(VOLSG_SOURCE_DIR) + "/examples/" + name; }
+std::string tool(const char* name) {
+    return std::string(VOLSG_BINARY_DIR) + "/viewer/" + name;
+}
+std::string example(const char* name) {
+    return std::string(VOLSG_SOURCE_DIR) + "/examples/" + name;
+}
 fs::path scratch(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / "volsg-tools-test";
     fs::create_directories(dir);
@@ -58,7 +62,8 @@ TEST_CASE("volsg-render renders every example on both offscreen backends") {
             CHECK(image.height == 64);
             // Something is drawn: not every pixel is the black background.
             bool drawn = false;
-            for (const auto& p : image.pixels) drawn = drawn || p.r + p.g + p.b > 0.0f;
+            for (const auto& p : image.pixels)
+                drawn = drawn || p.r + p.g + p.b > 0.0f;
             CHECK(drawn);
             ++rendered;
         }
@@ -69,14 +74,17 @@ TEST_CASE("volsg-render renders every example on both offscreen backends") {
 TEST_CASE("volsg-render gives the same pixels on osmesa and egl") {
     const fs::path a = scratch("still-osmesa.pfm"), b = scratch("still-egl.pfm");
     REQUIRE(run(tool("volsg-render") + " " + example("still-life.iv") + " -o " + a.string() +
-                " --size 64x64 --backend osmesa").status == 0);
+                " --size 64x64 --backend osmesa")
+                .status == 0);
     REQUIRE(run(tool("volsg-render") + " " + example("still-life.iv") + " -o " + b.string() +
-                " --size 64x64 --backend egl").status == 0);
+                " --size 64x64 --backend egl")
+                .status == 0);
     const volsg::Image ia = volsg::readPfm(a.string()), ib = volsg::readPfm(b.string());
     REQUIRE(ia.pixels.size() == ib.pixels.size());
     float maxDiff = 0.0f;
     for (std::size_t i = 0; i < ia.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) maxDiff = std::max(maxDiff, std::abs(ia.pixels[i][c] - ib.pixels[i][c]));
+        for (int c = 0; c < 3; ++c)
+            maxDiff = std::max(maxDiff, std::abs(ia.pixels[i][c] - ib.pixels[i][c]));
     CHECK(maxDiff == 0.0f);
 }
 
@@ -85,7 +93,8 @@ TEST_CASE("volsg-render fills the background colour it is given") {
     const fs::path scene = scratch("empty.iv");
     std::ofstream(scene) << "#Inventor V2.1 ascii\nSeparator { }\n";
     REQUIRE(run(tool("volsg-render") + " " + scene.string() + " -o " + out.string() +
-                " --size 8x4 --background 0.25,0.5,1").status == 0);
+                " --size 8x4 --background 0.25,0.5,1")
+                .status == 0);
     const volsg::Image image = volsg::readPfm(out.string());
     REQUIRE(image.width == 8);
     for (const auto& p : image.pixels) {
@@ -97,7 +106,8 @@ TEST_CASE("volsg-render fills the background colour it is given") {
 
 TEST_CASE("volsg-render writes a scene back when the output is .iv") {
     const fs::path out = scratch("every-node.iv");
-    const Run r = run(tool("volsg-render") + " " + example("every-node.iv") + " -o " + out.string());
+    const Run r =
+        run(tool("volsg-render") + " " + example("every-node.iv") + " -o " + out.string());
     CHECK(r.status == 0);
     std::ifstream in(out);
     std::string header;
@@ -108,12 +118,14 @@ TEST_CASE("volsg-render writes a scene back when the output is .iv") {
 TEST_CASE("volsg-render reports bad input in one line naming the file") {
     const fs::path scene = scratch("broken.iv");
     std::ofstream(scene) << "#Inventor V2.1 ascii\nSeparator {\n  Cube { width }\n";
-    const Run r = run(tool("volsg-render") + " " + scene.string() + " -o " + scratch("x.png").string());
+    const Run r =
+        run(tool("volsg-render") + " " + scene.string() + " -o " + scratch("x.png").string());
     CHECK(r.status != 0);
     CHECK(r.err.find("broken.iv:") != std::string::npos);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
 
-    const Run missing = run(tool("volsg-render") + " /nonexistent/scene.iv -o " + scratch("y.png").string());
+    const Run missing =
+        run(tool("volsg-render") + " /nonexistent/scene.iv -o " + scratch("y.png").string());
     CHECK(missing.status != 0);
     CHECK(missing.err.find("/nonexistent/scene.iv") != std::string::npos);
 
@@ -126,7 +138,8 @@ TEST_CASE("volsg-render reports bad input in one line naming the file") {
 TEST_CASE("the embedding example renders its three spheres and cone") {
     const fs::path out = scratch("embed.png");
     fs::remove(out);
-    const Run r = run(std::string(VOLSG_BINARY_DIR) + "/examples/volsg-embed-example " + out.string());
+    const Run r =
+        run(std::string(VOLSG_BINARY_DIR) + "/examples/volsg-embed-example " + out.string());
     INFO(r.err);
     REQUIRE(r.status == 0);
     const volsg::Image image = volsg::readPng(out.string());

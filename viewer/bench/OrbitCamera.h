@@ -1,8 +1,8 @@
 #pragma once
 // Cameras on a circle around the scene's centre, for benchmark frames that rotate the view.
 
-#include <volsg/render/Renderer.h>
 #include <volsg/math/Box3.h>
+#include <volsg/render/Renderer.h>
 
 namespace volsg::bench {
 

@@ -9,7 +9,9 @@ void Action::apply(Node& root) {
     beginTraversal(root);
 }
 
-void Action::beginTraversal(Node& root) { traverse(root); }
+void Action::beginTraversal(Node& root) {
+    traverse(root);
+}
 
 void Action::traverse(Node& node) {
     if (terminated_) return;

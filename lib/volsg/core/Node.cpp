@@ -9,7 +9,9 @@ namespace volsg {
 
 namespace {
 std::atomic<std::uint64_t> versionCounter{1};
-std::uint64_t nextVersion() { return versionCounter.fetch_add(1, std::memory_order_relaxed); }
+std::uint64_t nextVersion() {
+    return versionCounter.fetch_add(1, std::memory_order_relaxed);
+}
 } // namespace
 
 const NodeType& Node::classType() {
@@ -20,9 +22,13 @@ const NodeType& Node::classType() {
 Node::Node() : version_(nextVersion()) {}
 Node::~Node() = default;
 
-void Node::touch() { version_ = nextVersion(); }
+void Node::touch() {
+    version_ = nextVersion();
+}
 
-std::size_t Node::fieldCount() const { return type().fields().size(); }
+std::size_t Node::fieldCount() const {
+    return type().fields().size();
+}
 
 Field* Node::fieldAt(std::size_t i) {
     const auto& entries = type().fields();

@@ -75,7 +75,8 @@ private:
 };
 
 /// Writes the per-type boilerplate once (as VulkanSceneGraph's Inherit):
-/// `class Cube : public Inherit<Shape, Cube> { static constexpr const char* typeName = "Cube"; ... }`.
+/// `class Cube : public Inherit<Shape, Cube> { static constexpr const char* typeName = "Cube"; ...
+/// }`.
 template <class Parent, class Self> class Inherit : public Parent {
 public:
     template <class... Args> static ref_ptr<Self> create(Args&&... args) {
@@ -96,8 +97,10 @@ public:
 
 private:
     static NodeType::Factory factory() {
-        if constexpr (std::is_abstract_v<Self>) return nullptr;
-        else return []() -> ref_ptr<Node> { return ref_ptr<Node>(new Self()); };
+        if constexpr (std::is_abstract_v<Self>)
+            return nullptr;
+        else
+            return []() -> ref_ptr<Node> { return ref_ptr<Node>(new Self()); };
     }
 };
 

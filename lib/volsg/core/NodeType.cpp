@@ -20,7 +20,9 @@ bool NodeType::isDerivedFrom(const NodeType& other) const {
     return false;
 }
 
-ref_ptr<Node> NodeType::create() const { return factory_ ? factory_() : nullptr; }
+ref_ptr<Node> NodeType::create() const {
+    return factory_ ? factory_() : nullptr;
+}
 
 const std::vector<NodeType::FieldEntry>& NodeType::fields() const {
     std::call_once(fieldsOnce_, [this] {
@@ -44,14 +46,18 @@ NodeRegistry& NodeRegistry::instance() {
     return registry;
 }
 
-NodeRegistry::NodeRegistry() { registerBuiltinNodeTypes(*this); }
+NodeRegistry::NodeRegistry() {
+    registerBuiltinNodeTypes(*this);
+}
 
 void NodeRegistry::add(const NodeType& type) {
     std::lock_guard lock(mutex_);
     auto same = [&](const NodeType* t) { return std::string_view(t->name()) == type.name(); };
     auto it = std::find_if(types_.begin(), types_.end(), same);
-    if (it != types_.end()) *it = &type;
-    else types_.push_back(&type);
+    if (it != types_.end())
+        *it = &type;
+    else
+        types_.push_back(&type);
 }
 
 const NodeType* NodeRegistry::find(std::string_view name) const {

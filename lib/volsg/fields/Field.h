@@ -40,8 +40,8 @@ public:
     const char* name() const { return name_; }
     Node* owner() const { return owner_; }
 
-    virtual const char* typeName() const = 0;     ///< "SFFloat", "MFVec3f", ...
-    virtual void read(FieldInput& in) = 0;        ///< reads the value after the field name
+    virtual const char* typeName() const = 0; ///< "SFFloat", "MFVec3f", ...
+    virtual void read(FieldInput& in) = 0;    ///< reads the value after the field name
     virtual void write(FieldOutput& out) const = 0;
     virtual bool equals(const Field& other) const = 0; ///< same type and value
     virtual void copyFrom(const Field& other) = 0;     ///< same type required

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <initializer_list>
 #include <memory>
-#include <string_view>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -17,11 +17,11 @@ namespace volsg {
 class Tokenizer;
 
 /// How one value type is read and written; one struct per Inventor value type.
-#define VOLSG_VALUE_TRAITS(Traits, Type, SFName, MFName)                                          \
+#define VOLSG_VALUE_TRAITS(Traits, Type, SFName, MFName)                                           \
     struct Traits {                                                                                \
         using Value = Type;                                                                        \
-        static constexpr const char* sfName = SFName;                                             \
-        static constexpr const char* mfName = MFName;                                             \
+        static constexpr const char* sfName = SFName;                                              \
+        static constexpr const char* mfName = MFName;                                              \
         static Value read(Tokenizer& in);                                                          \
         static void write(std::ostream& out, const Value& v);                                      \
     };

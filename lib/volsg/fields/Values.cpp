@@ -9,6 +9,8 @@ glm::dquat Rotation::quat() const {
     return glm::angleAxis(double(angle), a / len);
 }
 
-glm::dmat4 Rotation::matrix() const { return glm::mat4_cast(quat()); }
+glm::dmat4 Rotation::matrix() const {
+    return glm::mat4_cast(quat());
+}
 
 } // namespace volsg

@@ -15,13 +15,14 @@ struct Mesh {
     enum class Primitive { Triangles, Lines };
     Primitive primitive = Primitive::Triangles;
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;   ///< one per position (empty for lines)
-    std::vector<glm::vec4> colors;    ///< optional, one per position (overrides diffuse)
+    std::vector<glm::vec3> normals;     ///< one per position (empty for lines)
+    std::vector<glm::vec4> colors;      ///< optional, one per position (overrides diffuse)
     std::vector<std::uint32_t> indices; ///< 3 per triangle or 2 per line segment
 
     Box3 bounds() const {
         Box3 b;
-        for (const auto& p : positions) b.extendBy(glm::dvec3(p));
+        for (const auto& p : positions)
+            b.extendBy(glm::dvec3(p));
         return b;
     }
     std::size_t primitiveCount() const {

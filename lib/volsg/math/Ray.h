@@ -12,7 +12,8 @@ struct Ray {
     glm::dvec3 at(double t) const { return origin + t * direction; }
     /// The same ray in the coordinates that `m` maps to (t values are preserved).
     Ray transformed(const glm::dmat4& m) const {
-        return {glm::dvec3(m * glm::dvec4(origin, 1.0)), glm::dvec3(m * glm::dvec4(direction, 0.0))};
+        return {glm::dvec3(m * glm::dvec4(origin, 1.0)),
+                glm::dvec3(m * glm::dvec4(direction, 0.0))};
     }
 };
 

@@ -3,7 +3,9 @@
 
 namespace volsg {
 
-State::State() { reset(); }
+State::State() {
+    reset();
+}
 
 void State::reset(const glm::dmat4& model) {
     models_.assign(1, model);
@@ -11,7 +13,9 @@ void State::reset(const glm::dmat4& model) {
     marks_.clear();
 }
 
-void State::push() { marks_.push_back({models_.size(), entries_.size()}); }
+void State::push() {
+    marks_.push_back({models_.size(), entries_.size()});
+}
 
 void State::pop() {
     if (marks_.empty()) return;
@@ -22,13 +26,20 @@ void State::pop() {
 
 void State::setModelMatrix(const glm::dmat4& m) {
     // Within one scope the top is replaced; a push() protects the outer value.
-    if (!marks_.empty() && models_.size() > marks_.back().models) models_.back() = m;
-    else if (marks_.empty() && models_.size() > 1) models_.back() = m;
-    else models_.push_back(m);
+    if (!marks_.empty() && models_.size() > marks_.back().models)
+        models_.back() = m;
+    else if (marks_.empty() && models_.size() > 1)
+        models_.back() = m;
+    else
+        models_.push_back(m);
 }
 
-void State::multModelMatrix(const glm::dmat4& m) { setModelMatrix(models_.back() * m); }
+void State::multModelMatrix(const glm::dmat4& m) {
+    setModelMatrix(models_.back() * m);
+}
 
-void State::add(const Node& property) { entries_.push_back({&property, models_.back()}); }
+void State::add(const Node& property) {
+    entries_.push_back({&property, models_.back()});
+}
 
 } // namespace volsg

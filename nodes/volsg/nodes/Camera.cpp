@@ -26,8 +26,12 @@ namespace {
 double adjustedHalfHeight(double halfHeight, double aspect) {
     return aspect < 1.0 ? halfHeight / aspect : halfHeight;
 }
-double sphereRadius(const Box3& box) { return std::max(glm::length(box.size()) * 0.5, 1e-6); }
-glm::dvec3 backwards(const Rotation& r) { return glm::dvec3(r.matrix() * glm::dvec4(0, 0, 1, 0)); }
+double sphereRadius(const Box3& box) {
+    return std::max(glm::length(box.size()) * 0.5, 1e-6);
+}
+glm::dvec3 backwards(const Rotation& r) {
+    return glm::dvec3(r.matrix() * glm::dvec4(0, 0, 1, 0));
+}
 } // namespace
 
 glm::dmat4 PerspectiveCamera::projectionMatrix(double aspect) const {
@@ -52,8 +56,7 @@ void PerspectiveCamera::viewAll(const Box3& box, double /*aspect*/) {
 glm::dmat4 OrthographicCamera::projectionMatrix(double aspect) const {
     const double halfH = adjustedHalfHeight(0.5 * double(height()), aspect);
     const double halfW = halfH * aspect;
-    return glm::ortho(-halfW, halfW, -halfH, halfH, double(nearDistance()),
-                      double(farDistance()));
+    return glm::ortho(-halfW, halfW, -halfH, halfH, double(nearDistance()), double(farDistance()));
 }
 
 void OrthographicCamera::viewAll(const Box3& box, double /*aspect*/) {

@@ -8,9 +8,15 @@
 
 namespace volsg {
 
-void Material::doAction(Action& action) { action.state().add(*this); }
-void Coordinate3::doAction(Action& action) { action.state().add(*this); }
-void Normal::doAction(Action& action) { action.state().add(*this); }
+void Material::doAction(Action& action) {
+    action.state().add(*this);
+}
+void Coordinate3::doAction(Action& action) {
+    action.state().add(*this);
+}
+void Normal::doAction(Action& action) {
+    action.state().add(*this);
+}
 void Light::doAction(Action& action) {
     if (on()) action.state().add(*this);
 }

@@ -16,7 +16,7 @@ public:
     SFInt32 tag{this, "tag", -1};
     /// Data values mapped to v = 0 and v = 1. Unset (default): the data type's range.
     SFVec2f dataRange{this, "dataRange", glm::vec2(0.0f, 255.0f)};
-    MFVec2f red{this, "red", {glm::vec2(0, 0), glm::vec2(1, 1)}};     ///< (v, output) points
+    MFVec2f red{this, "red", {glm::vec2(0, 0), glm::vec2(1, 1)}}; ///< (v, output) points
     MFVec2f green{this, "green", {glm::vec2(0, 0), glm::vec2(1, 1)}};
     MFVec2f blue{this, "blue", {glm::vec2(0, 0), glm::vec2(1, 1)}};
     MFVec2f alpha{this, "alpha", {glm::vec2(0, 0), glm::vec2(1, 1)}};

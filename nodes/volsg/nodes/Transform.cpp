@@ -15,7 +15,9 @@ glm::dmat4 Transform::matrix() const {
            glm::transpose(so) * glm::translate(I, -c);
 }
 
-void Transform::doAction(Action& action) { action.state().multModelMatrix(matrix()); }
+void Transform::doAction(Action& action) {
+    action.state().multModelMatrix(matrix());
+}
 
 void MatrixTransform::doAction(Action& action) {
     action.state().multModelMatrix(glm::dmat4(matrix()));

@@ -15,7 +15,7 @@ public:
     static const EnumValues renderModeNames, interpolationNames;
 
     SFEnum renderMode{this, "renderMode", renderModeNames, DVR};
-    SFInt32 numPlanes{this, "numPlanes", 0};               ///< 0: >= 2 per voxel along the view
+    SFInt32 numPlanes{this, "numPlanes", 0};                 ///< 0: >= 2 per voxel along the view
     SFInt32 interactivePlanes{this, "interactivePlanes", 0}; ///< 0: numPlanes / 4
     SFEnum interpolation{this, "interpolation", interpolationNames, LINEAR};
     SFBool preIntegrated{this, "preIntegrated", false};
