@@ -16,19 +16,6 @@ namespace volsg {
 
 namespace {
 
-VolumeRenderMode renderModeOf(int mode) {
-    switch (mode) {
-    case Volume::MIP:
-        return VolumeRenderMode::MIP;
-    case Volume::MINIP:
-        return VolumeRenderMode::MINIP;
-    case Volume::AVERAGE:
-        return VolumeRenderMode::AVERAGE;
-    default:
-        return VolumeRenderMode::DVR;
-    }
-}
-
 /// Walks the graph as a render does (every node's doAction, so transforms, separators,
 /// switches and property nodes act) and describes each Volume node it meets from the state.
 class VolumeCollector : public Action {
@@ -57,7 +44,7 @@ private:
                             std::to_string(tf.tag()));
             out.transferFunctions.insert_or_assign(tf.tag(), tf.function());
         }
-        out.mode = renderModeOf(volume.renderMode());
+        out.mode = volume.mode();
         for (const glm::vec2& p : volume.planeOpacity.getValues())
             out.planeOpacity.push_back({double(p.x), double(p.y)});
         if (const StateEntry* entry = state().nearest<BoxClip>()) {

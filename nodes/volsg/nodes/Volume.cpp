@@ -19,20 +19,20 @@ const EnumValues Volume::renderModeNames{
     {"DVR", DVR}, {"MIP", MIP}, {"MINIP", MINIP}, {"AVERAGE", AVERAGE}};
 const EnumValues Volume::interpolationNames{{"LINEAR", LINEAR}, {"NEAREST", NEAREST}};
 
-namespace {
-
-VolumeRenderMode renderModeOf(int mode) {
-    switch (mode) {
-    case Volume::MIP:
+VolumeRenderMode Volume::mode() const {
+    switch (renderMode()) {
+    case MIP:
         return VolumeRenderMode::MIP;
-    case Volume::MINIP:
+    case MINIP:
         return VolumeRenderMode::MINIP;
-    case Volume::AVERAGE:
+    case AVERAGE:
         return VolumeRenderMode::AVERAGE;
     default:
         return VolumeRenderMode::DVR;
     }
 }
+
+namespace {
 
 /// FNV-1a style mixing of a value into a running key.
 std::uint64_t mix(std::uint64_t key, std::uint64_t value) {
@@ -52,7 +52,7 @@ void Volume::render(RenderAction& action) {
     if (!volume.data) return;
     volume.tags = data->tagGrid();
     volume.model = state.modelMatrix();
-    volume.mode = renderModeOf(renderMode());
+    volume.mode = mode();
 
     // The nearest TransferFunction of each tag applies. The key follows the nodes' versions,
     // so the slicer rebuilds its tables exactly when one of them (or the set) changes.

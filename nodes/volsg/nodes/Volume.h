@@ -7,6 +7,8 @@
 
 namespace volsg {
 
+enum class VolumeRenderMode; // lib/volsg/reference/ReferenceRayCaster.h
+
 class Volume : public Inherit<Node, Volume> {
 public:
     static constexpr const char* typeName = "Volume";
@@ -23,6 +25,9 @@ public:
     /// (t, m): extinction multiplier over view depth, t = 0 nearest, 1 farthest box point.
     MFVec2f planeOpacity{this, "planeOpacity", {glm::vec2(0, 1), glm::vec2(1, 1)}};
     SFUInt32 textureBudget{this, "textureBudget", 0u}; ///< bytes; 0 = the driver's limit
+
+    /// renderMode as the engines name it.
+    VolumeRenderMode mode() const;
 
     void render(RenderAction& action) override;
     void getBoundingBox(BoundingBoxAction& action) override;
