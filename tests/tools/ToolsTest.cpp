@@ -1,6 +1,8 @@
 // The command-line tools and the embedding example, run as a user runs them.
 #include <doctest/doctest.h>
 
+#include <unistd.h> // getpid: ctest runs test cases as parallel processes
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -24,7 +26,8 @@ struct Run {
 
 // Runs a shell command with stderr captured; the exit status as the shell reports it.
 Run run(const std::string& command) {
-    const fs::path errFile = fs::temp_directory_path() / "volsg-tools-test.err";
+    const fs::path errFile =
+        fs::temp_directory_path() / ("volsg-tools-test-" + std::to_string(getpid()) + ".err");
     const int raw = std::system((command + " 2>" + errFile.string()).c_str());
     std::ifstream in(errFile);
     std::stringstream ss;
@@ -39,7 +42,8 @@ std::string example(const char* name) {
     return std::string(VOLSG_SOURCE_DIR) + "/examples/" + name;
 }
 fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / "volsg-tools-test";
+    const fs::path dir =
+        fs::temp_directory_path() / ("volsg-tools-test-" + std::to_string(getpid()));
     fs::create_directories(dir);
     return dir / name;
 }

@@ -2,6 +2,8 @@
 // and renderReference() composites the reference ray caster over GL's opaque geometry.
 #include <doctest/doctest.h>
 
+#include <unistd.h> // getpid: ctest runs test cases as parallel processes
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -242,7 +244,8 @@ TEST_CASE("the reference converts a perspective depth buffer to the right ray di
 
 TEST_CASE("volsg-render --reference writes a PFM of the reference image") {
     namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / "volsg-reference-scene-test";
+    const fs::path dir =
+        fs::temp_directory_path() / ("volsg-reference-scene-test-" + std::to_string(getpid()));
     fs::create_directories(dir);
     const fs::path sceneFile = dir / "cube-in-volume.iv", out = dir / "reference.pfm",
                    log = dir / "reference.out";

@@ -1,6 +1,8 @@
 // volsg-bench's speed-versus-error output and the volume examples, run as a user runs them.
 #include <doctest/doctest.h>
 
+#include <unistd.h> // getpid: ctest runs test cases as parallel processes
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -21,7 +23,8 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / "volsg-volume-bench-test";
+    const fs::path dir =
+        fs::temp_directory_path() / ("volsg-volume-bench-test-" + std::to_string(getpid()));
     fs::create_directories(dir);
     return dir / name;
 }

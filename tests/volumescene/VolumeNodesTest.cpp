@@ -1,6 +1,8 @@
 // VolumeData, TransferFunction and BoxClip: read from scene text, generated grids, lazy reload.
 #include <doctest/doctest.h>
 
+#include <unistd.h> // getpid: ctest runs test cases as parallel processes
+
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -34,7 +36,8 @@ template <class T> ref_ptr<T> readOne(const std::string& body) {
 }
 
 std::filesystem::path scratchDir() {
-    const auto dir = std::filesystem::temp_directory_path() / "volsg-volume-nodes-test";
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("volsg-volume-nodes-test-" + std::to_string(getpid()));
     std::filesystem::create_directories(dir);
     return dir;
 }

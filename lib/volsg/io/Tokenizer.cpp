@@ -283,44 +283,32 @@ const Token& Tokenizer::consumeNumberWord(const char* expected) {
     return last_;
 }
 
-double Tokenizer::readDouble() {
+template <class Real> Real Tokenizer::readReal(const char* rangeMessage) {
     const Token& t = consumeNumberWord("a number");
     if (looksNonFinite(t.text)) failAt(t, "value '" + excerpt(t.text) + "' is not a finite number");
     long magnitude = 0;
     if (!isDecimalNumber(t.text, magnitude)) failAt(t, "expected a number, found " + describe(t));
     std::string_view s = t.text;
     if (s[0] == '+') s.remove_prefix(1);
-    double value = 0.0;
+    // Parsed straight as Real (a float not via double) so the result is correctly rounded.
+    Real value = 0;
     const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
     if (ec == std::errc::result_out_of_range) {
         if (magnitude > 0)
-            failAt(t, "value " + excerpt(t.text) + " is out of range for a 64-bit float");
-        value = s[0] == '-' ? -0.0 : 0.0; // underflow: as close to the value as doubles get
+            failAt(t, "value " + excerpt(t.text) + " is out of range for " + rangeMessage);
+        value = s[0] == '-' ? -Real(0) : Real(0); // underflow: as close as the type gets
     } else if (ec != std::errc() || ptr != s.data() + s.size()) {
         failAt(t, "expected a number, found " + describe(t));
     }
     return value;
 }
 
+double Tokenizer::readDouble() {
+    return readReal<double>("a 64-bit float");
+}
+
 float Tokenizer::readFloat() {
-    const Token& t = consumeNumberWord("a number");
-    if (looksNonFinite(t.text)) failAt(t, "value '" + excerpt(t.text) + "' is not a finite number");
-    long magnitude = 0;
-    if (!isDecimalNumber(t.text, magnitude)) failAt(t, "expected a number, found " + describe(t));
-    std::string_view s = t.text;
-    if (s[0] == '+') s.remove_prefix(1);
-    // Parsed straight as float (not via double) so the result is the correctly rounded float.
-    float value = 0.0f;
-    const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-    if (ec == std::errc::result_out_of_range) {
-        if (magnitude > 0)
-            failAt(t, "value " + excerpt(t.text) +
-                          " is out of range for a 32-bit float (largest 3.4028235e38)");
-        value = s[0] == '-' ? -0.0f : 0.0f;
-    } else if (ec != std::errc() || ptr != s.data() + s.size()) {
-        failAt(t, "expected a number, found " + describe(t));
-    }
-    return value;
+    return readReal<float>("a 32-bit float (largest 3.4028235e38)");
 }
 
 namespace {

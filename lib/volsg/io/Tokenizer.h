@@ -63,6 +63,7 @@ private:
     Token lex();
     Token lexString(int line, int column);
     const Token& consumeNumberWord(const char* expected);
+    template <class Real> Real readReal(const char* rangeMessage);
     std::string_view text_;
     std::string fileName_;
     std::size_t pos_ = 0;
