@@ -6,6 +6,7 @@
 #include <volsg/actions/Action.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/ReadContext.h>
+#include <volsg/volume/AttractorBasin.h>
 #include <volsg/volume/TestVolumes.h>
 #include <volsg/volume/VolumeGrid.h>
 #include <volsg/volumeio/VolumeReader.h>
@@ -23,7 +24,8 @@ const EnumValues VolumeData::generatorNames{{"NONE", NONE},
                                             {"SOFT_SPHERE", SOFT_SPHERE},
                                             {"THIN_SHELL", THIN_SHELL},
                                             {"RAMP16", RAMP16},
-                                            {"LABELLED", LABELLED}};
+                                            {"LABELLED", LABELLED},
+                                            {"ATTRACTOR_BASIN", ATTRACTOR_BASIN}};
 
 namespace {
 
@@ -157,6 +159,12 @@ void VolumeData::load() const {
         LabelledVolume labelled = makeLabelledVolume(cubicSide(dims, "LABELLED"));
         data = labelled.data;
         tags = labelled.tags;
+        break;
+    }
+    case ATTRACTOR_BASIN: {
+        AttractorBasinVolume generated = makeAttractorBasin(cubicSide(dims, "ATTRACTOR_BASIN"));
+        data = generated.data;
+        tags = generated.tags;
         break;
     }
     default:

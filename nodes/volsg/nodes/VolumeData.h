@@ -19,7 +19,17 @@ public:
     /// store `dataType`; THIN_SHELL is UBYTE (radius 0.35 n, 1.5 voxels thick); RAMP16 is
     /// USHORT 0..65535 along x; LABELLED is a UBYTE soft sphere with four tags. Each has its
     /// own spacing (Marschner-Lobb 2/(n-1), others 1) unless `spacing` is set.
-    enum Generator { NONE, MARSCHNER_LOBB, SOFT_SPHERE, THIN_SHELL, RAMP16, LABELLED };
+    /// ATTRACTOR_BASIN is the UBYTE Lorenz attractor (tag 1) inside its basin surface (tag 2)
+    /// of lib/volsg/volume/AttractorBasin.h.
+    enum Generator {
+        NONE,
+        MARSCHNER_LOBB,
+        SOFT_SPHERE,
+        THIN_SHELL,
+        RAMP16,
+        LABELLED,
+        ATTRACTOR_BASIN
+    };
     static const EnumValues dataTypeNames, tagDataTypeNames, byteOrderNames, generatorNames;
 
     SFString fileName{this, "fileName", ""};
