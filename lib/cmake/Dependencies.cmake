@@ -5,6 +5,9 @@ find_package(glm REQUIRED)
 find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED COMPONENTS EGL)
 find_package(ZLIB REQUIRED)
+# glTF loading: Debian's tinygltf is a shared library, so no TINYGLTF_IMPLEMENTATION anywhere
+# (ENVIRONMENT.md 4).
+find_package(TinyGLTF REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 if(VOLSG_BUILD_TESTS)
   find_package(doctest REQUIRED)

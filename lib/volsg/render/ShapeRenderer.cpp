@@ -117,6 +117,12 @@ void ShapeRenderer::submit(RenderAction& action, const GpuMesh& gpu) {
     }
 }
 
+void ShapeRenderer::queueTransparent(double eyeDepth, std::function<void()> draw) {
+    DrawItem& item = transparentQueue_.emplace_back();
+    item.eyeDepth = eyeDepth;
+    item.external = std::move(draw);
+}
+
 void ShapeRenderer::fill(RenderAction& action, const GpuMesh& gpu, DrawItem& item) {
     const State& state = action.state();
     item.mesh = &gpu;
@@ -177,6 +183,11 @@ void ShapeRenderer::setClipDistances(int count) {
 }
 
 void ShapeRenderer::draw(const DrawItem& item) {
+    if (item.external) {
+        item.external();
+        ++drawsLastFrame_;
+        return;
+    }
     const GpuMesh& gpu = *item.mesh;
     program_.use();
     glUniformMatrix4fv(loc_.model, 1, GL_FALSE, glm::value_ptr(item.model));

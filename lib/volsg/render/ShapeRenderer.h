@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -45,6 +46,18 @@ public:
     /// Error for more clip planes or lights in scope than it can draw.
     void submit(RenderAction& action, const GpuMesh& gpu);
 
+    /// Queues a draw that is not a shape's mesh (a glTF BLEND primitive) with the transparent
+    /// shapes, sorted with them by `eyeDepth` (eye-space z, more negative = farther). It runs in
+    /// drawQueuedTransparent() and may bind any program, VAO and texture; it sets the clip
+    /// distances it uses through setClipDistances().
+    void queueTransparent(double eyeDepth, std::function<void()> draw);
+    /// Enables GL_CLIP_DISTANCE0 .. count-1 and disables the rest, keeping track of them, so
+    /// other renderers drawing between shapes (glTF models) leave the state shapes expect.
+    void setClipDistances(int count);
+    /// Counts a draw made by another renderer (a glTF primitive) in drawsLastFrame(), which
+    /// volumes read to know whether opaque geometry is in the depth buffer.
+    void countDraw() { ++drawsLastFrame_; }
+
     /// Per frame: the camera; clears the transparent queue.
     void beginFrame(const RenderView& view);
     /// Per pass: resets the clip-distance switches this class keeps track of.
@@ -73,6 +86,7 @@ private:
         int clipPlaneCount = 0;
         std::array<glm::vec4, kMaxClipPlanes> clipPlanes{};
         double eyeDepth = 0.0; ///< eye-space z of the bounds' centre (more negative = farther)
+        std::function<void()> external; ///< set: a queueTransparent() draw, not a mesh
     };
     struct Locations {
         GLint model, normalMatrix, viewProjection, clipPlanes, clipPlaneCount, lit, hasNormals,
@@ -82,7 +96,6 @@ private:
 
     void fill(RenderAction& action, const GpuMesh& gpu, DrawItem& item);
     void draw(const DrawItem& item);
-    void setClipDistances(int count);
 
     Program program_;
     Locations loc_{};
