@@ -10,7 +10,9 @@
 #include "ReferenceViews.h"
 #include <volsg/core/Error.h>
 #include <volsg/io/SceneReader.h>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Volume.h>
+#include <volsg/nodes/VolumeObject.h>
 #include <volsg/render/Renderer.h>
 
 namespace volsg::bench {
@@ -18,6 +20,7 @@ namespace volsg::bench {
 namespace {
 
 constexpr const char* kVolumeName = "SUITE_VOLUME";
+constexpr const char* kShearWarpName = "SUITE_SHEARWARP";
 
 /// Opacity of a slab L0 thick, given for side 64, for a volume of `side` voxels in the same
 /// box: L0 scales by 64 / side.
@@ -51,6 +54,47 @@ Volume* findSuiteVolume(Node& node) {
             if (child)
                 if (Volume* v = findSuiteVolume(*child)) return v;
     return nullptr;
+}
+
+ShearWarpVolume* findShearWarp(Node& node) {
+    if (node.getName() == kShearWarpName && node.isA<ShearWarpVolume>())
+        return static_cast<ShearWarpVolume*>(&node);
+    if (auto* children = node.children())
+        for (const auto& child : *children)
+            if (child)
+                if (ShearWarpVolume* v = findShearWarp(*child)) return v;
+    return nullptr;
+}
+
+/// The suite scene for the shear-warp rows: shear-warp renders parallel projections only, so
+/// the perspective camera becomes an orthographic one at the same place whose view height is
+/// the perspective frustum's at the focal distance (the volume looks the same size), and the
+/// Volume node becomes a ShearWarpVolume with one DVR object per transfer function (per tag
+/// for the labelled volume, so each voxel keeps its function).
+std::string shearWarpSceneText(const std::string& text, bool labelled) {
+    std::string out = text;
+    const std::string perspective = "PerspectiveCamera {";
+    const std::size_t at = out.find(perspective);
+    if (at != std::string::npos) {
+        const std::size_t end = out.find('}', at);
+        std::string camera = out.substr(at, end + 1 - at);
+        camera.replace(0, perspective.size(), "OrthographicCamera {");
+        const std::size_t angle = camera.find("heightAngle 0.9 ");
+        if (angle != std::string::npos)
+            camera.replace(angle, 16, format("height %.6g ", 2.0 * 4.18 * std::tan(0.45)));
+        out.replace(at, end + 1 - at, camera);
+    }
+    const std::string volume = std::string("DEF ") + kVolumeName + " Volume { }";
+    const std::size_t v = out.find(volume);
+    if (v != std::string::npos) {
+        const std::string objects =
+            labelled ? "VolumeObject { source TAG tag 0 } VolumeObject { source TAG tag 1 } "
+                       "VolumeObject { source TAG tag 2 } VolumeObject { source TAG tag 3 }"
+                     : "VolumeObject { }";
+        out.replace(v, volume.size(),
+                    std::string("DEF ") + kShearWarpName + " ShearWarpVolume { " + objects + " }");
+    }
+    return out;
 }
 
 bool sameImages(const std::vector<Image>& a, const std::vector<Image>& b) {
@@ -137,6 +181,64 @@ BenchRow measureSlicing(Node& root, Volume& volume, const SuiteScene& scene,
         row.available = false;
         row.note = e.what();
         images.clear();
+    }
+    return row;
+}
+
+/// Times the rotating views with the ShearWarpVolume node: a warm-up pass over every view
+/// first (it extracts the objects and builds the lists of every principal axis the orbit
+/// uses), then, with `optimized`, waits for the idle-time optimizer before timing.
+BenchRow measureShearWarp(Node& root, ShearWarpVolume& volume, const SuiteScene& scene, int threads,
+                          bool optimized, const VolumeSuiteSettings& st, const OrbitViews& views,
+                          const ReferenceImages& reference) {
+    BenchRow row;
+    row.scene = scene.name;
+    row.path = "shear-warp";
+    row.setting = format("%g threads", threads) + (optimized ? ", optimized" : ", not optimized") +
+                  ", orthographic";
+    row.series = optimized ? "shear-warp optimized" : "shear-warp";
+    row.pointLabel = format("%g thr", threads);
+    volume.threads = threads;
+    volume.optimize = optimized;
+    RenderOptions options;
+    options.width = st.width;
+    options.height = st.height;
+    options.background = st.background;
+    try {
+        Renderer renderer;
+        for (const auto& camera : views.cameras) { // warm-up: extraction and lists
+            options.camera = camera;
+            renderer.render(root, options);
+            if (optimized) volume.waitForOptimizer();
+        }
+        Samples samples;
+        std::vector<Image> images;
+        std::size_t next = 0;
+        for (std::size_t i = 0; i < views.cameras.size(); ++i) {
+            options.camera = views.cameras[i];
+            Image image;
+            samples.ms.push_back(timeMs([&] { image = renderer.render(root, options); }));
+            if (optimized) volume.waitForOptimizer(); // idle time between frames, not timed
+            if (next < views.errorIndices.size() && views.errorIndices[next] == int(i)) {
+                images.push_back(std::move(image));
+                ++next;
+            }
+        }
+        row.ms = samples.median();
+        row.frames = int(samples.ms.size());
+        ImageError error;
+        for (std::size_t i = 0; i < images.size(); ++i)
+            error.add(images[i], reference.images[i]);
+        row.hasError = !images.empty();
+        row.rmse = error.rmse();
+        row.psnr = error.psnr();
+        row.maxAbs = error.maxAbs();
+        row.errorFrames = int(images.size());
+        row.memoryBytes = volume.voxelListBytes();
+        row.memoryKind = "voxel lists";
+    } catch (const Error& e) {
+        row.available = false;
+        row.note = e.what();
     }
     return row;
 }
@@ -272,6 +374,29 @@ std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
                 }
                 emit(on);
             }
+
+        // Shear-warp: the same volume and transfer functions seen by an orthographic camera,
+        // measured against the reference of those views.
+        const bool labelled = scene.name.rfind("labelled", 0) == 0;
+        ref_ptr<Node> swRoot =
+            readSceneFromString(shearWarpSceneText(scene.text, labelled), scene.name + "-sw.iv");
+        ShearWarpVolume* shearWarp = findShearWarp(*swRoot);
+        if (!shearWarp) throw Error("suite scene " + scene.name + " has no " + kShearWarpName);
+        const OrbitViews swViews = makeOrbitViews(*swRoot, options, st.frames, st.errorFrames);
+        const ReferenceImages swTruth =
+            renderReferenceViews(*swRoot, options, swViews, truthOptions);
+        BenchRow swTruthRow = truthRow;
+        swTruthRow.setting =
+            format("tolerance %g, orthographic (shear-warp's truth)", truthOptions.tolerance);
+        swTruthRow.ms = swTruth.ms.median();
+        swTruthRow.frames = int(swTruth.ms.ms.size());
+        swTruthRow.memoryBytes = swTruth.rssDelta;
+        swTruthRow.note = format("error bound %.2g", swTruth.errorBound);
+        emit(swTruthRow);
+        for (bool optimized : {false, true})
+            for (int threads : {1, 2})
+                emit(measureShearWarp(*swRoot, *shearWarp, scene, threads, optimized, st, swViews,
+                                      swTruth));
     }
     return rows;
 }

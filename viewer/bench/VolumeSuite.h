@@ -47,8 +47,14 @@ struct VolumeSuiteSettings {
 ///   preIntegrated off and on, still and interactive (RenderOptions::interactive: the node's
 ///   interactivePlanes, by default numPlanes / 4). A setting the node rejects (an Error) or
 ///   ignores (preIntegrated giving exactly the image without it) is printed as n/a.
+/// - `shear-warp` (the ShearWarpVolume node) on the same scene seen by an orthographic camera
+///   (shear-warp renders parallel projections only; same place, view height of the
+///   perspective frustum at the focal distance), against the reference of those views (its
+///   own truth row): 1 and 2 threads, with and without the idle-time optimizer (which runs
+///   between frames, untimed), after a warm-up pass over all views (extraction, lists).
 /// Memory: the Volume's resident 3D texture bytes (SlicingStats) for slicing, "texture"; the
-/// growth of the process's resident memory for the reference, "rss".
+/// growth of the process's resident memory for the reference, "rss"; the voxel lists of the
+/// objects (extracted voxels and RenderLists of every axis built), "voxel lists".
 std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& settings);
 
 } // namespace volsg::bench

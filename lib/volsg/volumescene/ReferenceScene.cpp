@@ -8,6 +8,7 @@
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeData.h>
@@ -24,6 +25,10 @@ public:
 
 protected:
     void dispatch(Node& node) override {
+        // Before its doAction: the state nodes among its children are scoped to it.
+        if (node.isA<ShearWarpVolume>())
+            if (auto v = static_cast<ShearWarpVolume&>(node).describeForReference(state()))
+                volumes.push_back(std::move(*v));
         node.doAction(*this);
         if (node.isA<Volume>()) volumes.push_back(describe(static_cast<const Volume&>(node)));
     }

@@ -7,6 +7,7 @@
 #include <volsg/nodes/Coordinate3.h>
 #include <volsg/nodes/Cube.h>
 #include <volsg/nodes/Cylinder.h>
+#include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/Group.h>
 #include <volsg/nodes/IndexedFaceSet.h>
 #include <volsg/nodes/IndexedLineSet.h>
@@ -15,12 +16,14 @@
 #include <volsg/nodes/MatrixTransform.h>
 #include <volsg/nodes/Normal.h>
 #include <volsg/nodes/Separator.h>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Switch.h>
 #include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/Transform.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeData.h>
+#include <volsg/nodes/VolumeObject.h>
 
 namespace volsg {
 
@@ -48,6 +51,9 @@ void registerBuiltinNodeTypes(NodeRegistry& r) {
     r.add(TransferFunction::classType());
     r.add(BoxClip::classType());
     r.add(Volume::classType());
+    r.add(ShearWarpVolume::classType());
+    r.add(VolumeObject::classType());
+    r.add(GltfModel::classType());
 }
 
 } // namespace volsg

@@ -1,0 +1,718 @@
+#include <volsg/shearwarp/ShearWarpRenderer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include <volsg/core/Error.h>
+#include <volsg/shearwarp/PackedVoxel.h>
+#include <volsg/shearwarp/VoxelTables.h>
+
+namespace volsg {
+
+namespace {
+
+constexpr float kPickAlpha = 0.02f;         // a sample this opaque (or more) is what a click hits
+constexpr float kOpaque = 0.999f;           // pure DVR: a pixel this opaque takes no more samples
+constexpr float kSurfaceAlpha = 0.5f;       // a Surface run this opaque is drawn opaque
+constexpr float kSurfaceDepthAlpha = 0.25f; // a Surface sample this opaque may give the depth
+
+template <class F> void parallelFor(int count, F body) {
+    if (count <= 1) {
+        body(0);
+        return;
+    }
+    std::vector<std::thread> threads;
+    threads.reserve(std::size_t(count - 1));
+    for (int i = 1; i < count; ++i)
+        threads.emplace_back([&body, i] { body(i); });
+    body(0);
+    for (auto& t : threads)
+        t.join();
+}
+
+bool isOrthographic(const glm::dmat4& p) {
+    return p[0][3] == 0.0 && p[1][3] == 0.0 && p[2][3] == 0.0 && p[3][3] == 1.0;
+}
+
+glm::dmat4 indexToLocalMatrix(const VoxelObject& object) {
+    const glm::dvec3 s = object.spacing();
+    const glm::dvec3 origin = -0.5 * glm::dvec3(object.dimensions()) * s + 0.5 * s;
+    glm::dmat4 m(1.0);
+    m[0][0] = s.x;
+    m[1][1] = s.y;
+    m[2][2] = s.z;
+    m[3] = glm::dvec4(origin, 1.0);
+    return m;
+}
+
+bool isClipped(const ShearWarpObject& o, const glm::dvec3& p) {
+    for (const glm::dvec4& plane : o.clipPlanes)
+        if (glm::dot(glm::dvec3(plane), p) < plane.w) return true;
+    if (o.box) {
+        const glm::dvec3 q = glm::dvec3(o.box->localToBox * glm::dvec4(p, 1.0));
+        const glm::dvec3 lo = o.box->origin, hi = o.box->origin + o.box->extent;
+        if (q.x < lo.x || q.y < lo.y || q.z < lo.z || q.x > hi.x || q.y > hi.y || q.z > hi.z)
+            return true;
+    }
+    return false;
+}
+
+/// One object part's drawing data for a frame.
+struct Part {
+    VoxelTables tables;
+    bool draw = false;
+};
+
+struct FrameObject {
+    ShearWarpObject* source = nullptr;
+    RenderList* list = nullptr;
+    Part parts[2];                         // unclipped, clipped
+    std::vector<std::uint32_t> sliceStart; // entries of slice k: [sliceStart[k], sliceStart[k+1])
+    std::vector<glm::vec4> mipTable;       // value (4096) -> premultiplied colour, MIP
+};
+
+/// First index in [begin, end) whose packed b is >= b (voxels sorted by b).
+std::uint32_t lowerRow(const std::uint32_t* packed, std::uint32_t begin, std::uint32_t end, int b) {
+    if (b <= 0) return begin;
+    return std::uint32_t(
+        std::partition_point(packed + begin, packed + end,
+                             [b](std::uint32_t v) { return int(PackedVoxel::b(v)) < b; }) -
+        packed);
+}
+
+glm::vec4 mipLookup(const std::vector<glm::vec4>& table, float value) {
+    const float x = std::clamp(value, 0.0f, 1.0f) * 4095.0f;
+    const int i = std::min(int(x), 4094);
+    const float f = x - float(i);
+    return table[std::size_t(i)] * (1.0f - f) + table[std::size_t(i) + 1] * f;
+}
+
+} // namespace
+
+void ShearWarpRenderer::prepare(ShearWarpObject& o, RenderList& list) {
+    if (list.clipKey != o.clipKey) {
+        const glm::dmat4 toLocal = indexToLocalMatrix(*o.object);
+        for (RenderListEntry& e : list.entries) {
+            list.sortByPosition(e.first, e.lastInSlice);
+            std::uint32_t split = e.lastInSlice;
+            if (o.clipKey != 0)
+                split = list.partition(e.first, e.lastInSlice, [&](std::uint32_t i) {
+                    const glm::dvec3 p =
+                        glm::dvec3(toLocal * glm::dvec4(glm::dvec3(list.position(e, i)), 1.0));
+                    return !isClipped(o, p);
+                });
+            e.firstClipped = split;
+            e.last = split;
+            e.lastClipped = e.lastInSlice;
+            e.optimized = false;
+        }
+        list.clipKey = o.clipKey;
+        list.tableKey = 0; // re-derive and re-optimise below
+    }
+    const PackedLayout wantUnclipped = VoxelTables::layoutFor(o.unclipped.mode);
+    const PackedLayout wantClipped = VoxelTables::layoutFor(o.clipped.mode);
+    if (list.tableKey != o.tableKey) {
+        for (RenderListEntry& e : list.entries) {
+            list.sortByPosition(e.first, e.firstClipped);
+            list.sortByPosition(e.firstClipped, e.lastInSlice);
+            list.derivePacked(e.first, e.firstClipped, wantUnclipped);
+            list.derivePacked(e.firstClipped, e.lastInSlice, wantClipped);
+            e.last = e.firstClipped;
+            e.lastClipped = e.lastInSlice;
+            e.optimized = false;
+        }
+        list.unclippedLayout = wantUnclipped;
+        list.clippedLayout = wantClipped;
+        list.contributesUnclipped = VoxelTables::contributionMask(o, o.unclipped);
+        list.contributesClipped = VoxelTables::contributionMask(o, o.clipped);
+        list.tableKey = o.tableKey;
+    }
+}
+
+ShearWarpFrame ShearWarpRenderer::render(std::vector<ShearWarpObject>& objects,
+                                         const ShearWarpView& view) {
+    if (!isOrthographic(view.projection))
+        throw Error("ShearWarpVolume renders parallel projections only: use an "
+                    "OrthographicCamera (a perspective camera is not supported)");
+    if (view.width <= 0 || view.height <= 0) throw Error("shear-warp: empty output size");
+    ShearWarpFrame frame;
+    frame.image = Image(view.width, view.height);
+    frame.windowDepth.assign(std::size_t(view.width) * std::size_t(view.height), 1.0f);
+    if (objects.empty()) return frame;
+    for (const auto& o : objects)
+        if (!o.object) throw Error("shear-warp: object without voxels");
+    const VoxelObject& first = *objects.front().object;
+    for (const auto& o : objects)
+        if (o.object->dimensions() != first.dimensions())
+            throw Error("shear-warp: the objects of one frame must come from one volume");
+
+    // --- Factorisation -----------------------------------------------------------------------
+    const glm::dmat4 toLocal = indexToLocalMatrix(first);
+    const glm::dmat4 E = view.modelView * toLocal; // index -> eye
+    const glm::dvec3 D = glm::inverse(glm::dmat3(E)) * glm::dvec3(0.0, 0.0, -1.0);
+    int c = 0;
+    for (int axis = 1; axis < 3; ++axis)
+        if (std::abs(D[axis]) > std::abs(D[c])) c = axis;
+    const int a = (c + 1) % 3, b = (c + 2) % 3;
+    const glm::ivec3 n = first.dimensions();
+    const int na = n[a], nb = n[b], nc = n[c];
+    const double sa = D[a] / D[c], sb = D[b] / D[c];
+    const double ua0 = std::max(0.0, sa * (nc - 1)) + 1.0;
+    const double vb0 = std::max(0.0, sb * (nc - 1)) + 1.0;
+    const int W = na + int(std::ceil(std::abs(sa) * (nc - 1))) + 3;
+    const int H = nb + int(std::ceil(std::abs(sb) * (nc - 1))) + 3;
+    const bool ascending = D[c] < 0.0; // back to front: the far end of c first
+
+    auto indexPoint = [&](double u, double v, double k) {
+        glm::dvec3 g;
+        g[a] = u - ua0 + sa * k;
+        g[b] = v - vb0 + sb * k;
+        g[c] = k;
+        return g;
+    };
+    auto eyeOf = [&](const glm::dvec3& g) { return glm::dvec3(E * glm::dvec4(g, 1.0)); };
+    const glm::dmat4& P = view.projection;
+    auto pixelOf = [&](const glm::dvec3& eye) {
+        const glm::dvec4 clip = P * glm::dvec4(eye, 1.0);
+        return glm::dvec2((clip.x * 0.5 + 0.5) * view.width - 0.5,
+                          (0.5 - clip.y * 0.5) * view.height - 0.5);
+    };
+    const glm::dvec2 p00 = pixelOf(eyeOf(indexPoint(0, 0, 0)));
+    const glm::dvec2 p10 = pixelOf(eyeOf(indexPoint(1, 0, 0)));
+    const glm::dvec2 p01 = pixelOf(eyeOf(indexPoint(0, 1, 0)));
+    glm::dmat3 warp(1.0); // (u, v, 1) -> pixel
+    warp[0] = glm::dvec3(p10 - p00, 0.0);
+    warp[1] = glm::dvec3(p01 - p00, 0.0);
+    warp[2] = glm::dvec3(p00, 1.0);
+    const glm::dmat3 unwarp = glm::inverse(warp);
+    const double z0 = eyeOf(indexPoint(0, 0, 0)).z;
+    const double zu = eyeOf(indexPoint(1, 0, 0)).z - z0;
+    const double zv = eyeOf(indexPoint(0, 1, 0)).z - z0;
+    const double zk = eyeOf(indexPoint(0, 0, 1)).z - z0;
+    auto windowDepthOf = [&](double zEye) { return float(0.5 * (P[2][2] * zEye + P[3][2]) + 0.5); };
+    glm::dvec3 step(0.0);
+    step[a] = sa;
+    step[b] = sb;
+    step[c] = 1.0;
+    const double ds = glm::length(step * first.spacing());
+    const double stepRatio =
+        ds / (std::min({first.spacing().x, first.spacing().y, first.spacing().z}));
+
+    frame.outputToIntermediate = unwarp;
+    frame.indexToLocal = toLocal;
+    frame.axisA = a;
+    frame.axisB = b;
+    frame.axisC = c;
+    frame.shearA = sa;
+    frame.shearB = sb;
+    frame.originA = ua0;
+    frame.originB = vb0;
+    frame.stats.principalAxis = c;
+    frame.stats.intermediateSize = {W, H};
+
+    // --- Objects: lists, clip split, tables ------------------------------------------------
+    std::vector<FrameObject> fo(objects.size());
+    std::set<RenderList*> lists;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        fo[i].source = &objects[i];
+        fo[i].list = &objects[i].object->renderList(c);
+        if (!lists.insert(fo[i].list).second)
+            throw Error("shear-warp: two objects of a frame share one voxel list");
+    }
+    std::vector<std::unique_lock<std::mutex>> locks;
+    for (RenderList* list : lists)
+        locks.emplace_back(list->mutex);
+
+    const glm::dmat3 localToEye(view.modelView);
+    bool pureDvr = view.interObject == InterObjectCompositing::DVR;
+    for (FrameObject& f : fo) {
+        ShearWarpObject& o = *f.source;
+        prepare(o, *f.list);
+        const VoxelLook looks[2] = {o.unclipped, o.clipped};
+        for (int part = 0; part < 2; ++part) {
+            f.parts[part].draw = looks[part].opacity > 0.0f;
+            if (f.parts[part].draw)
+                f.parts[part].tables =
+                    VoxelTables::build(o, looks[part], stepRatio, localToEye, view.lightDirection);
+        }
+        if (o.compositing != ObjectCompositing::DVR) pureDvr = false;
+        if (o.compositing == ObjectCompositing::MIP) {
+            f.mipTable.resize(4096);
+            for (int m = 0; m < 4096; ++m) {
+                const double v = double(m) / 4095.0;
+                const float alpha =
+                    float(std::clamp(o.transferFunction.evaluate(TransferFunction1D::Alpha, v) *
+                                         double(o.unclipped.opacity),
+                                     0.0, 1.0));
+                const glm::vec3 colour(o.transferFunction.evaluate(TransferFunction1D::Red, v),
+                                       o.transferFunction.evaluate(TransferFunction1D::Green, v),
+                                       o.transferFunction.evaluate(TransferFunction1D::Blue, v));
+                f.mipTable[std::size_t(m)] = glm::vec4(colour * alpha, alpha);
+            }
+        }
+        f.sliceStart.assign(std::size_t(nc) + 1, 0);
+        const auto& entries = f.list->entries;
+        std::size_t e = 0;
+        for (int k = 0; k <= nc; ++k) {
+            while (e < entries.size() && entries[e].slice() < k)
+                ++e;
+            f.sliceStart[std::size_t(k)] = std::uint32_t(e);
+        }
+    }
+    frame.stats.fastPath = pureDvr;
+
+    // --- Buffers -------------------------------------------------------------------------------
+    const std::size_t pixels = std::size_t(W) * std::size_t(H);
+    global_.assign(pixels, glm::vec4(0.0f));
+    if (!pureDvr) {
+        local_.assign(pixels, glm::vec4(0.0f));
+        localValue_.assign(pixels, -1.0f);
+        localDepth_.assign(pixels, 1.0f);
+        localObject_.assign(pixels, std::int16_t(-1));
+    }
+    hitDepth_.assign(pixels, 1.0f);
+    if (pureDvr) {
+        nextOpen_.resize(pixels);
+        opaqueCount_.assign(std::size_t(H), 0);
+        for (std::size_t p = 0; p < pixels; ++p)
+            nextOpen_[p] = std::int32_t(p % std::size_t(W));
+    }
+    frame.pickObject.assign(pixels, std::int16_t(-1));
+    frame.pickSlice.assign(pixels, 0.0f);
+    const bool hasLimit = !view.opaqueWindowDepth.empty();
+    if (hasLimit) {
+        if (view.opaqueWindowDepth.size() != std::size_t(view.width) * std::size_t(view.height))
+            throw Error("shear-warp: opaque depth buffer of the wrong size");
+        // Per intermediate pixel: a sample at slice k is in front of the opaque surface when
+        // zk * k > limit (eye z grows towards the viewer).
+        limit_.assign(pixels, -std::numeric_limits<float>::infinity());
+        for (int v = 0; v < H; ++v)
+            for (int u = 0; u < W; ++u) {
+                const glm::dvec3 px = warp * glm::dvec3(u, v, 1.0);
+                const int x = int(std::lround(px.x)), y = int(std::lround(px.y));
+                if (x < 0 || y < 0 || x >= view.width || y >= view.height) continue;
+                const float d = view.opaqueWindowDepth[std::size_t(y) * std::size_t(view.width) +
+                                                       std::size_t(x)];
+                if (d >= 1.0f) continue;
+                const double zOpaque = ((2.0 * d - 1.0) - P[3][2]) / P[2][2];
+                limit_[std::size_t(v) * std::size_t(W) + std::size_t(u)] =
+                    float(zOpaque - (z0 + zu * u + zv * v));
+            }
+    }
+
+    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    const int threads =
+        std::clamp(view.threads > 0 ? view.threads : int(hardware), 1, std::max(1, H / 4));
+    bands_.resize(std::size_t(threads));
+
+    // --- Compositing, one band of intermediate rows per thread ------------------------------
+    const InterObjectCompositing inter = view.interObject;
+    auto flush = [&](std::size_t p) {
+        const int oi = localObject_[p];
+        if (oi < 0) return;
+        const FrameObject& f = fo[std::size_t(oi)];
+        glm::vec4 layer = local_[p];
+        if (f.source->compositing == ObjectCompositing::MIP)
+            layer =
+                localValue_[p] >= 0.0f ? mipLookup(f.mipTable, localValue_[p]) : glm::vec4(0.0f);
+        if (f.source->compositing == ObjectCompositing::Surface && layer.w >= kSurfaceAlpha) {
+            layer = glm::vec4(glm::vec3(layer) / layer.w, 1.0f);
+            if (localDepth_[p] < 1.0f) hitDepth_[p] = localDepth_[p];
+        }
+        glm::vec4& g = global_[p];
+        if (inter == InterObjectCompositing::DVR)
+            g = layer + (1.0f - layer.w) * g;
+        else
+            g = glm::max(g, layer);
+        localObject_[p] = -1;
+        local_[p] = glm::vec4(0.0f);
+        localValue_[p] = -1.0f;
+        localDepth_[p] = 1.0f;
+    };
+
+    parallelFor(threads, [&](int t) {
+        BandScratch& s = bands_[std::size_t(t)];
+        const int r0 = H * t / threads, r1 = H * (t + 1) / threads;
+        const int bandRows = r1 - r0;
+        s.lines[0].assign(std::size_t(W) + 1, glm::vec4(0.0f));
+        s.lines[1].assign(std::size_t(W) + 1, glm::vec4(0.0f));
+        s.voxels = 0;
+        s.hidden = 0;
+        s.entries = 0;
+
+        for (int stepIndex = 0; stepIndex < nc; ++stepIndex) {
+            // Back to front; pure DVR runs front to back for early ray termination.
+            const int k = (ascending != pureDvr) ? stepIndex : nc - 1 - stepIndex;
+            const double tu = ua0 - sa * k, tv = vb0 - sb * k;
+            const int iu0 = int(std::floor(tu)), iv0 = int(std::floor(tv));
+            const float fu = float(tu - iu0), fv = float(tv - iv0);
+            const float zSlice = float(zk * k);
+            const float sliceDepth = windowDepthOf(z0 + zk * k); // plus zu*u + zv*v per pixel
+
+            for (std::size_t oi = 0; oi < fo.size(); ++oi) {
+                FrameObject& f = fo[oi];
+                const std::uint32_t e0 = f.sliceStart[std::size_t(k)];
+                const std::uint32_t e1 = f.sliceStart[std::size_t(k) + 1];
+                if (e0 == e1) continue;
+                const bool mip = f.source->compositing == ObjectCompositing::MIP;
+                const RenderList& list = *f.list;
+                const std::uint32_t* packed = list.packed.data();
+                const std::uint16_t* values = list.value12.data();
+
+                // One resampled sample of this object's slice composited at band pixel p.
+                auto compositePixel = [&](std::size_t p, const glm::vec4& sample) {
+                    if (hasLimit && !(zSlice > limit_[p])) return; // behind opaque geometry
+                    if (pureDvr) {
+                        global_[p] = sample + (1.0f - sample.w) * global_[p];
+                        if (sample.w >= kPickAlpha) {
+                            frame.pickObject[p] = std::int16_t(oi);
+                            frame.pickSlice[p] = float(k);
+                        }
+                        return;
+                    }
+                    if (localObject_[p] != std::int16_t(oi)) {
+                        flush(p);
+                        localObject_[p] = std::int16_t(oi);
+                    }
+                    switch (f.source->compositing) {
+                    case ObjectCompositing::DVR:
+                        local_[p] = sample + (1.0f - sample.w) * local_[p];
+                        if (sample.w >= kPickAlpha) {
+                            frame.pickObject[p] = std::int16_t(oi);
+                            frame.pickSlice[p] = float(k);
+                        }
+                        break;
+                    case ObjectCompositing::MIP:
+                        if (sample.x > localValue_[p]) {
+                            localValue_[p] = sample.x;
+                            if (mipLookup(f.mipTable, sample.x).w >= kPickAlpha) {
+                                frame.pickObject[p] = std::int16_t(oi);
+                                frame.pickSlice[p] = float(k);
+                            }
+                        }
+                        break;
+                    case ObjectCompositing::Surface:
+                        // Accumulated like DVR within the run; opaque at the flush when the
+                        // run's alpha reaches kSurfaceAlpha. Its depth: the front-most sample
+                        // that is substantially opaque.
+                        local_[p] = sample + (1.0f - sample.w) * local_[p];
+                        if (sample.w >= kPickAlpha) {
+                            frame.pickObject[p] = std::int16_t(oi);
+                            frame.pickSlice[p] = float(k);
+                        }
+                        if (sample.w >= kSurfaceDepthAlpha) {
+                            const std::size_t u = p % std::size_t(W), vv = p / std::size_t(W);
+                            localDepth_[p] = sliceDepth + float(0.5 * P[2][2] *
+                                                                (zu * double(u) + zv * double(vv)));
+                        }
+                        break;
+                    }
+                };
+
+                // The first column >= c of band row `row` whose pixel is not yet opaque (W:
+                // none); rows outside the band count as opaque (another thread's). Opaque
+                // pixels link to the next column, followed with path halving (Lacroute's
+                // opaque-pixel links).
+                auto firstOpen = [&](int row, int c) -> int {
+                    if (row < 0 || row >= bandRows) return W + 1;
+                    std::int32_t* open =
+                        nextOpen_.data() + (std::size_t(row) + std::size_t(r0)) * std::size_t(W);
+                    while (c < W && open[c] != c) {
+                        const int next = open[c];
+                        if (next < W) open[c] = open[next];
+                        c = next;
+                    }
+                    return c;
+                };
+
+                for (std::uint32_t ei = e0; ei < e1; ++ei) {
+                    const RenderListEntry& e = list.entries[ei];
+                    const int rowBase = int(e.offset.y) + iv0 - r0; // band row of b = 0
+                    const int colBase = int(e.offset.x) + iu0;
+                    // In-piece coordinates of the volume's side faces (256: not in this piece).
+                    // Data is clamped to the edge up to the box face, half a voxel out, and
+                    // nothing lies beyond (SCENE-FORMAT section 4): the pixel on a face voxel's
+                    // outer side takes its full value inside the face, none outside.
+                    const unsigned edgeA0 = e.offset.x == 0 ? 0u : 256u;
+                    const unsigned edgeB0 = e.offset.y == 0 ? 0u : 256u;
+                    const unsigned edgeA1 = unsigned(na - 1 - int(e.offset.x)) < 256u
+                                                ? unsigned(na - 1 - int(e.offset.x))
+                                                : 256u;
+                    const unsigned edgeB1 = unsigned(nb - 1 - int(e.offset.y)) < 256u
+                                                ? unsigned(nb - 1 - int(e.offset.y))
+                                                : 256u;
+                    const float edgeA0Weight = fu <= 0.5f ? 1.0f : 0.0f;
+                    const float edgeA1Weight = fu >= 0.5f ? 1.0f : 0.0f;
+                    // Weight of voxel row b's line in its own intermediate row and the next.
+                    auto ownWeight = [&](unsigned b) {
+                        return b == edgeB0 ? (fv <= 0.5f ? 1.0f : 0.0f) : 1.0f - fv;
+                    };
+                    auto nextWeight = [&](unsigned b) {
+                        return b == edgeB1 ? (fv >= 0.5f ? 1.0f : 0.0f) : fv;
+                    };
+
+                    // The drawn parts, restricted to the voxel rows whose two intermediate
+                    // rows (row, row + 1) meet the band.
+                    std::uint32_t at[2] = {0, 0}, end[2] = {0, 0};
+                    const std::uint32_t ranges[2][2] = {{e.first, e.last},
+                                                        {e.firstClipped, e.lastClipped}};
+                    for (int part = 0; part < 2; ++part) {
+                        if (!f.parts[part].draw || ranges[part][0] >= ranges[part][1]) continue;
+                        at[part] = lowerRow(packed, ranges[part][0], ranges[part][1], -1 - rowBase);
+                        end[part] = lowerRow(packed, at[part], ranges[part][1], bandRows - rowBase);
+                        s.voxels += end[part] - at[part];
+                    }
+                    if (at[0] == end[0] && at[1] == end[1]) continue;
+                    ++s.entries;
+
+                    // Row by row: a voxel row b is resampled along a into a line buffer; the
+                    // intermediate row b + rowBase blends line b and line b - 1 with the slice's
+                    // weights. Lines keep the column range they touched.
+                    struct LineState {
+                        glm::vec4* px;
+                        int lo, hi;
+                    };
+                    LineState cur{s.lines[0].data(), W, 0}, prev{s.lines[1].data(), W, 0};
+                    int prevB = -2;
+                    auto clearLine = [](LineState& line) {
+                        for (int c = line.lo; c < line.hi; ++c)
+                            line.px[c] = glm::vec4(0.0f);
+                        line.lo = std::numeric_limits<int>::max();
+                        line.hi = 0;
+                    };
+                    cur.lo = prev.lo = std::numeric_limits<int>::max();
+                    auto compositeRow = [&](int row, const LineState* a, float wa,
+                                            const LineState* b, float wb) {
+                        if (row < 0 || row >= bandRows) return;
+                        const int lo = std::min(a ? a->lo : W, b ? b->lo : W);
+                        const int hi = std::max(a ? a->hi : 0, b ? b->hi : 0);
+                        const std::size_t rowStart =
+                            (std::size_t(row) + std::size_t(r0)) * std::size_t(W);
+                        const glm::vec4 zero(0.0f);
+                        const glm::vec4* pa = a ? a->px : nullptr;
+                        const glm::vec4* pb = b ? b->px : nullptr;
+                        if (pureDvr) { // the hot path: front to back ("under"), inlined
+                            glm::vec4* g = global_.data() + rowStart;
+                            std::int16_t* pickObject = frame.pickObject.data() + rowStart;
+                            float* pickSlice = frame.pickSlice.data() + rowStart;
+                            std::int32_t* open = nextOpen_.data() + rowStart;
+                            const float* limit = hasLimit ? limit_.data() + rowStart : nullptr;
+                            for (int c = lo; c < hi; ++c) {
+                                const glm::vec4 sample =
+                                    (pa ? wa * pa[c] : zero) + (pb ? wb * pb[c] : zero);
+                                if (sample.w <= 0.0f || g[c].w >= kOpaque) continue;
+                                if (limit && !(zSlice > limit[c])) continue; // behind geometry
+                                g[c] += (1.0f - g[c].w) * sample;
+                                if (sample.w >= kPickAlpha && pickObject[c] < 0) {
+                                    pickObject[c] = std::int16_t(oi);
+                                    pickSlice[c] = float(k);
+                                }
+                                if (g[c].w >= kOpaque) { // terminated
+                                    open[c] = c + 1;
+                                    ++opaqueCount_[std::size_t(row + r0)];
+                                }
+                            }
+                            return;
+                        }
+                        for (int c = lo; c < hi; ++c) {
+                            const glm::vec4 sample =
+                                (pa ? wa * pa[c] : zero) + (pb ? wb * pb[c] : zero);
+                            if (sample.w <= 0.0f) continue;
+                            compositePixel(rowStart + std::size_t(c), sample);
+                        }
+                    };
+
+                    while (at[0] < end[0] || at[1] < end[1]) {
+                        unsigned b = 256;
+                        for (int part = 0; part < 2; ++part)
+                            if (at[part] < end[part])
+                                b = std::min(b, PackedVoxel::b(packed[at[part]]));
+                        if (prevB >= 0 && prevB != int(b) - 1) { // a gap: prev's next row alone
+                            compositeRow(prevB + 1 + rowBase, nullptr, 0.0f, &prev,
+                                         nextWeight(unsigned(prevB)));
+                            clearLine(prev);
+                            prevB = -2;
+                        }
+                        // Line b: every voxel of row b of both parts, split between its two
+                        // columns (those whose 4 pixels are all opaque skipped).
+                        int hiddenBefore = -1, visibleThrough = -1;
+                        // Only rows that both have stopped pixels can hide a voxel.
+                        const int rowA = int(b) + rowBase, rowB = rowA + 1;
+                        const bool inA = rowA >= 0 && rowA < bandRows;
+                        const bool inB = rowB >= 0 && rowB < bandRows;
+                        const bool ertActive = pureDvr &&
+                                               (!inA || opaqueCount_[std::size_t(rowA + r0)] > 0) &&
+                                               (!inB || opaqueCount_[std::size_t(rowB + r0)] > 0);
+                        const std::int32_t* openA =
+                            ertActive && inA
+                                ? nextOpen_.data() + std::size_t(rowA + r0) * std::size_t(W)
+                                : nullptr;
+                        const std::int32_t* openB =
+                            ertActive && inB
+                                ? nextOpen_.data() + std::size_t(rowB + r0) * std::size_t(W)
+                                : nullptr;
+                        for (int part = 0; part < 2; ++part) {
+                            if (at[part] >= end[part]) continue;
+                            const VoxelTables& tables = f.parts[part].tables;
+                            const glm::vec4* rgba = tables.rgba.data();
+                            const std::uint8_t* lut2 = tables.lut2.data();
+                            const bool direct = tables.kernel == VoxelTables::Kernel::Direct;
+                            const std::uint32_t mask = tables.mask;
+                            std::uint32_t i = at[part];
+                            for (; i < end[part]; ++i) {
+                                const std::uint32_t v = packed[i];
+                                if (PackedVoxel::b(v) != b) break;
+                                glm::vec4 colour;
+                                if (mip)
+                                    colour = glm::vec4(float(values[i]) * (1.0f / 4095.0f), 0.0f,
+                                                       0.0f, 1.0f);
+                                else if (direct)
+                                    colour = rgba[PackedVoxel::attributes16(v) & mask];
+                                else
+                                    colour = rgba[(PackedVoxel::second4(v) << 8) |
+                                                  lut2[PackedVoxel::main12(v)]];
+                                if (colour.w <= 0.0f) continue;
+                                const unsigned va = PackedVoxel::a(v);
+                                const int col = int(va) + colBase;
+                                if (ertActive) { // early ray termination: skip hidden voxels
+                                    if (col < hiddenBefore) {
+                                        ++s.hidden;
+                                        continue;
+                                    }
+                                    if (col > visibleThrough) {
+                                        const bool anyOpen =
+                                            (openA &&
+                                             (openA[col] == col || openA[col + 1] == col + 1)) ||
+                                            (openB &&
+                                             (openB[col] == col || openB[col + 1] == col + 1));
+                                        if (!anyOpen) {
+                                            ++s.hidden;
+                                            const int row = int(b) + rowBase;
+                                            hiddenBefore = std::min(firstOpen(row, col),
+                                                                    firstOpen(row + 1, col)) -
+                                                           1;
+                                            continue;
+                                        }
+                                        visibleThrough = col;
+                                    }
+                                }
+                                const float w0 = va == edgeA0 ? edgeA0Weight : 1.0f - fu;
+                                const float w1 = va == edgeA1 ? edgeA1Weight : fu;
+                                cur.px[col] += w0 * colour;
+                                cur.px[col + 1] += w1 * colour;
+                                cur.lo = std::min(cur.lo, col);
+                                cur.hi = std::max(cur.hi, col + 2);
+                            }
+                            at[part] = i;
+                        }
+                        compositeRow(int(b) + rowBase, &cur, ownWeight(b),
+                                     prevB >= 0 ? &prev : nullptr,
+                                     prevB >= 0 ? nextWeight(unsigned(prevB)) : 0.0f);
+                        if (prevB >= 0) clearLine(prev);
+                        std::swap(cur, prev);
+                        prevB = int(b);
+                    }
+                    if (prevB >= 0) {
+                        compositeRow(prevB + 1 + rowBase, nullptr, 0.0f, &prev,
+                                     nextWeight(unsigned(prevB)));
+                        clearLine(prev);
+                    }
+                }
+            }
+        }
+        if (!pureDvr)
+            for (std::size_t p = std::size_t(r0) * std::size_t(W);
+                 p < std::size_t(r1) * std::size_t(W); ++p)
+                flush(p);
+    });
+    for (const BandScratch& s : bands_) {
+        frame.stats.voxelsTouched += s.voxels;
+        frame.stats.voxelsHidden += s.hidden;
+        frame.stats.entriesDrawn += s.entries;
+    }
+    locks.clear();
+
+    // --- Warp: bilinear from the intermediate image ------------------------------------------
+    auto fetch = [&](int u, int v) {
+        if (u < 0 || v < 0 || u >= W || v >= H) return glm::vec4(0.0f);
+        return global_[std::size_t(v) * std::size_t(W) + std::size_t(u)];
+    };
+    // Between the outermost voxel centres and the box faces the data is clamped to the edge
+    // (SCENE-FORMAT section 4). Along an unsheared intermediate axis the rays are parallel to
+    // the box's side faces: a ray within half a voxel outside the outermost voxel column sees
+    // that column's values all along, so the warp clamps to it (exact). Along a sheared axis the
+    // silhouette is slanted and clamping would smear it; there the warp blends towards empty
+    // pixels (an error confined to the half-voxel border, measured in README.md).
+    const bool clampU = std::abs(sa) < 1e-9, clampV = std::abs(sb) < 1e-9;
+    const double uLo = ua0, uHi = ua0 + (na - 1), vLo = vb0, vHi = vb0 + (nb - 1);
+    const int outThreads = std::clamp(threads, 1, std::max(1, view.height / 8));
+    bool anySurface = false; // depth is written only by Surface objects
+    for (const FrameObject& f : fo)
+        anySurface = anySurface || f.source->compositing == ObjectCompositing::Surface;
+    const glm::dvec2 perPixel(unwarp[0]); // (u, v) per output pixel along x
+    parallelFor(outThreads, [&](int t) {
+        const int y0 = view.height * t / outThreads, y1 = view.height * (t + 1) / outThreads;
+        const glm::vec4* image = global_.data();
+        for (int y = y0; y < y1; ++y) {
+            const glm::dvec2 rowStart(unwarp * glm::dvec3(0.0, y, 1.0));
+            glm::vec4* out = frame.image.pixels.data() + std::size_t(y) * std::size_t(view.width);
+            for (int x = 0; x < view.width; ++x) {
+                glm::dvec2 uv = rowStart + double(x) * perPixel;
+                if (clampU) {
+                    if (uv.x < uLo - 0.5 || uv.x > uHi + 0.5) continue;
+                    uv.x = std::clamp(uv.x, uLo, uHi);
+                }
+                if (clampV) {
+                    if (uv.y < vLo - 0.5 || uv.y > vHi + 0.5) continue;
+                    uv.y = std::clamp(uv.y, vLo, vHi);
+                }
+                if (uv.x <= -1.0 || uv.y <= -1.0 || uv.x >= W || uv.y >= H) continue;
+                const int u = int(uv.x + 1.0) - 1, v = int(uv.y + 1.0) - 1; // floor, uv > -1
+                const float wu = float(uv.x - u), wv = float(uv.y - v);
+                glm::vec4 value;
+                if (u >= 0 && v >= 0 && u + 1 < W && v + 1 < H) { // inside: no bounds checks
+                    const glm::vec4* p = image + std::size_t(v) * std::size_t(W) + std::size_t(u);
+                    value = (p[0] * (1 - wu) + p[1] * wu) * (1 - wv) +
+                            (p[W] * (1 - wu) + p[W + 1] * wu) * wv;
+                } else {
+                    value = (fetch(u, v) * (1 - wu) + fetch(u + 1, v) * wu) * (1 - wv) +
+                            (fetch(u, v + 1) * (1 - wu) + fetch(u + 1, v + 1) * wu) * wv;
+                }
+                out[x] = value;
+                if (anySurface) {
+                    const int nu = int(std::lround(uv.x)), nv = int(std::lround(uv.y));
+                    if (nu >= 0 && nv >= 0 && nu < W && nv < H)
+                        frame.windowDepth[std::size_t(y) * std::size_t(view.width) +
+                                          std::size_t(x)] =
+                            hitDepth_[std::size_t(nv) * std::size_t(W) + std::size_t(nu)];
+                }
+            }
+        }
+    });
+    return frame;
+}
+
+std::optional<ShearWarpPick> ShearWarpRenderer::pick(const ShearWarpFrame& frame, int x, int y) {
+    const glm::ivec2 size = frame.stats.intermediateSize;
+    if (size.x <= 0) return std::nullopt;
+    const glm::dvec3 uv = frame.outputToIntermediate * glm::dvec3(x, y, 1.0);
+    const int u = int(std::lround(uv.x)), v = int(std::lround(uv.y));
+    if (u < 0 || v < 0 || u >= size.x || v >= size.y) return std::nullopt;
+    const std::size_t p = std::size_t(v) * std::size_t(size.x) + std::size_t(u);
+    if (frame.pickObject[p] < 0) return std::nullopt;
+    const double k = frame.pickSlice[p];
+    glm::dvec3 g;
+    g[frame.axisA] = uv.x - frame.originA + frame.shearA * k;
+    g[frame.axisB] = uv.y - frame.originB + frame.shearB * k;
+    g[frame.axisC] = k;
+    ShearWarpPick pick;
+    pick.object = frame.pickObject[p];
+    pick.localPosition = glm::dvec3(frame.indexToLocal * glm::dvec4(g, 1.0));
+    return pick;
+}
+
+} // namespace volsg

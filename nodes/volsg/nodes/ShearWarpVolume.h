@@ -1,0 +1,78 @@
+#pragma once
+// ShearWarpVolume: the RTVR voxel-list renderer as a node. A group of TransferFunction and
+// BoxClip state nodes and VolumeObject children (Inventor style: each VolumeObject takes the
+// state before it), drawing the VolumeData in scope by shear-warp on the CPU in the Volume pass.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <volsg/fields/Fields.h>
+#include <volsg/nodes/Group.h>
+#include <volsg/shearwarp/ShearWarpRenderer.h>
+
+namespace volsg {
+
+class State;
+class VolumeObject;
+class VoxelListOptimizer;
+struct RayCastVolume;
+
+class ShearWarpVolume : public Inherit<Group, ShearWarpVolume> {
+public:
+    static constexpr const char* typeName = "ShearWarpVolume";
+    enum InterObject { DVR, MIP };
+    static const EnumValues interObjectNames;
+
+    SFEnum interObjectCompositing{this, "interObjectCompositing", interObjectNames, DVR};
+    SFBool optimize{this, "optimize", true}; ///< run the idle-time optimizer
+    SFInt32 threads{this, "threads", 0};     ///< 0: every core
+
+    /// The objects as the engine takes them, from the state at this node (VolumeData,
+    /// TransferFunctions, BoxClip, ClipPlanes above it) and the state nodes among the
+    /// children. Extracts (or reuses) voxel lists. `sources` receives the VolumeObject of each.
+    /// Empty without VolumeData in scope. Throws Error for an invalid TransferFunction.
+    std::vector<ShearWarpObject> gatherObjects(const State& state,
+                                               std::vector<VolumeObject*>* sources = nullptr);
+    /// The reference ray caster's description of this node (ReferenceScene's bridge): one
+    /// volume with a transfer function per object's tag (WHOLE objects: the default), MIP when
+    /// every object is MIP, clip planes and the nearest BoxClip (clippedOpacity of the first
+    /// object as outside opacity). THRESHOLD sources and non-TF render modes have no
+    /// counterpart there; the description is exact for TF-mode DVR/MIP objects.
+    std::optional<RayCastVolume> describeForReference(const State& state);
+
+    /// The frame the last render drew (for picking and tests), or null.
+    const ShearWarpFrame* lastFrame() const { return lastFrame_.get(); }
+    /// What the last frame shows at pixel (x, y) (row 0 at the top): the VolumeObject and the
+    /// point in world coordinates. Empty where nothing was hit.
+    struct Pick {
+        VolumeObject* object = nullptr;
+        glm::dvec3 worldPosition{0.0};
+    };
+    std::optional<Pick> pickAt(int x, int y) const;
+
+    /// Bytes of the voxel lists (extracted voxels and every RenderList built) of the objects
+    /// the last frame drew.
+    std::size_t voxelListBytes() const;
+
+    /// Blocks until the optimizer has finished with the current lists.
+    void waitForOptimizer();
+
+    void doAction(Action& action) override;
+    void render(RenderAction& action) override;
+    void getBoundingBox(BoundingBoxAction& action) override;
+
+    ShearWarpVolume();
+
+protected:
+    ~ShearWarpVolume() override;
+
+private:
+    ShearWarpRenderer renderer_;
+    std::unique_ptr<VoxelListOptimizer> optimizer_;
+    std::unique_ptr<ShearWarpFrame> lastFrame_;
+    std::vector<VolumeObject*> lastSources_;
+    std::vector<ref_ptr<VoxelObject>> lastObjects_;
+    glm::dmat4 lastModel_{1.0};
+};
+
+} // namespace volsg
