@@ -13,8 +13,10 @@
 #include "CommandLine.h"
 #include "bench/BenchRow.h"
 #include "bench/ImageError.h"
+#include "bench/NodeSuite.h"
 #include "bench/OrbitCamera.h"
 #include "bench/ReferenceViews.h"
+#include "bench/RtvrSuite.h"
 #include "bench/SceneGenerators.h"
 #include "bench/Timing.h"
 #include "bench/VolumeSuite.h"
@@ -35,12 +37,34 @@ const char* usage =
     "                   [--keep DIR]\n"
     "       volsg-bench --suite volumes [--size WxH] [--frames N] [--error-frames K]\n"
     "                   [--volume-side N] [--csv FILE] [--plot FILE.svg] [--keep DIR]\n"
+    "       volsg-bench --suite node [--size WxH] [--frames N] [--error-frames K]\n"
+    "                   [--tolerance T] [--planes P,P,...] [--planes-only] [--cases NAME,...]\n"
+    "                   [--kinds dvr,dvr-lit,mip] [--scenes DIR]\n"
+    "                   [--reference-dir DIR] [--compare DIR [--rows CSV]] [--keep DIR]\n"
+    "                   [--csv FILE] [--plot FILE.svg]\n"
+    "       volsg-bench --suite node --export-views DIR [--size WxH] [--frames N] ...\n"
     "  --error         also compare K of the frames with the reference ray caster (same\n"
     "                  views, same size): RMSE, PSNR and max abs error\n"
     "  --error-frames  how many frames to compare (default: all, at most 4)\n"
     "  --suite volumes generated volume scenes, every volume path and setting: ms/frame,\n"
     "                  error against the reference, memory (default 128x128, 12 frames,\n"
-    "                  64^3 voxels; --volume-side 128 for 128^3)\n";
+    "                  64^3 voxels; --volume-side 128 for 128^3)\n"
+    "  --suite node    the Volume node on Marschner-Lobb 256^3 and the chest CT (scenes in\n"
+    "                  viewer/bench/scenes/node-*.iv; default 512x512, 8 frames, 2 compared\n"
+    "                  with the reference at --tolerance, default 1e-4): DVR unlit and lit,\n"
+    "                  MIP; automatic (2 per voxel), interactive (a quarter) and --planes\n"
+    "                  (planes per voxel, default 0.25) plane counts; ms/frame, process and\n"
+    "                  node CPU per frame, bricks drawn and skipped, texture memory, error\n"
+    "  --cases         ml256, chest-ct (default both); --kinds: dvr, dvr-lit, mip (default\n"
+    "                  all); --planes-only: only the --planes rows\n"
+    "  --reference-dir keep the reference images there and reuse them on later runs\n"
+    "  --export-views  write the cameras, volumes and transfer functions of the node suite\n"
+    "                  for viewer/vtk/vtk_volume_bench.py into DIR, and stop\n"
+    "  --compare DIR   add VTK's rows (DIR/vtk-results.tsv and its PFM frames, written by\n"
+    "                  vtk_volume_bench.py) with their error on the same views, and the\n"
+    "                  side-by-side table at equal error\n"
+    "  --rows CSV      take the Volume node's rows from the CSV of an earlier node-suite run\n"
+    "                  instead of timing them again\n";
 
 struct Settings {
     std::string scene, suite, keepDir, csv, plot;
@@ -51,6 +75,13 @@ struct Settings {
     int volumeSide = 64;
     bool error = false;
     int errorFrames = 4;
+    bool errorFramesGiven = false;
+    double tolerance = 0.0; ///< 0: the suite's default
+    std::vector<double> planes;
+    std::vector<std::string> cases, kinds;
+    bool planesOnly = false;
+    std::string scenesDir = VOLSG_BENCH_SCENES_DIR;
+    std::string referenceDir, exportDir, compareDir, rowsCsv;
     RenderOptions options;
     bool sizeGiven = false;
     Backend backend = Backend::OSMesa;
@@ -191,6 +222,73 @@ int sceneBenchmark(const Settings& st) {
     return 0;
 }
 
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        if (comma > start) out.push_back(text.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return out;
+}
+
+double parsePositive(const std::string& text, const std::string& option) {
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || !(v > 0.0) || !std::isfinite(v))
+        throw Error(option + " wants positive numbers, got '" + text + "'");
+    return v;
+}
+
+double parseTolerance(const std::string& text) {
+    const double t = parsePositive(text, "--tolerance");
+    if (t >= 1.0) throw Error("--tolerance wants a number between 0 and 1, got '" + text + "'");
+    return t;
+}
+
+/// --suite node: the Volume node on the volumes, or (--export-views) the views and
+/// volumes for the VTK script.
+int nodeSuite(const Settings& st) {
+    bench::NodeSuiteSettings ns;
+    if (st.sizeGiven) {
+        ns.width = st.options.width;
+        ns.height = st.options.height;
+    }
+    if (st.framesGiven) ns.frames = st.frames;
+    if (st.errorFramesGiven) ns.errorFrames = st.errorFrames;
+    ns.errorFrames = std::min(ns.errorFrames, ns.frames);
+    if (st.tolerance > 0.0) ns.tolerance = st.tolerance;
+    if (!st.planes.empty()) ns.planesPerVoxel = st.planes;
+    ns.background = st.options.background;
+    ns.backend = st.backend;
+    ns.scenesDir = st.scenesDir;
+    ns.cases = st.cases;
+    ns.kinds = st.kinds;
+    ns.planesOnly = st.planesOnly;
+    ns.referenceDir = st.referenceDir;
+    ns.keepDir = st.keepDir;
+    ns.compareDir = st.compareDir;
+    ns.rowsCsv = st.rowsCsv;
+    if (!st.exportDir.empty()) {
+        bench::exportNodeSuiteViews(ns, st.exportDir);
+        return 0;
+    }
+    const std::vector<bench::BenchRow> rows = bench::runNodeSuite(ns);
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "%dx%d, %d rotating views, %d compared with the reference at tolerance %g; "
+                  "labels: planes per voxel",
+                  ns.width, ns.height, ns.frames, ns.errorFrames, ns.tolerance);
+    writeOutputs(st, rows, "volsg-bench node suite: RMSE against the reference vs time", note);
+    return 0;
+}
+
 int run(int argc, char** argv) {
     cli::Arguments args(argc, argv);
     Settings st;
@@ -206,8 +304,30 @@ int run(int argc, char** argv) {
             st.sizeGiven = true;
         } else if (a == "--error")
             st.error = true;
-        else if (a == "--error-frames")
+        else if (a == "--error-frames") {
             st.errorFrames = args.intValue(a, 1, 100000);
+            st.errorFramesGiven = true;
+        } else if (a == "--tolerance")
+            st.tolerance = parseTolerance(args.value(a));
+        else if (a == "--planes")
+            for (const std::string& p : splitList(args.value(a)))
+                st.planes.push_back(parsePositive(p, "--planes"));
+        else if (a == "--cases")
+            st.cases = splitList(args.value(a));
+        else if (a == "--kinds")
+            st.kinds = splitList(args.value(a));
+        else if (a == "--planes-only")
+            st.planesOnly = true;
+        else if (a == "--scenes")
+            st.scenesDir = args.value(a);
+        else if (a == "--reference-dir")
+            st.referenceDir = args.value(a);
+        else if (a == "--export-views")
+            st.exportDir = args.value(a);
+        else if (a == "--compare")
+            st.compareDir = args.value(a);
+        else if (a == "--rows")
+            st.rowsCsv = args.value(a);
         else if (a == "--csv")
             st.csv = args.value(a);
         else if (a == "--plot")
@@ -263,10 +383,15 @@ int run(int argc, char** argv) {
                      note);
         return 0;
     }
+    if (st.suite == "node") return nodeSuite(st);
+    if (st.suite == "rtvr") // exit code 1 when no row was measured
+        return bench::runRtvrSuite(
+                   {st.options.width, st.options.height, st.frames, st.backend, st.keepDir, {}})
+            .empty();
     if (st.suite == "parse" || st.suite == "all") parseSuite(st);
     if (st.suite == "traversal" || st.suite == "all") traversalSuite(st);
     if (st.suite != "parse" && st.suite != "traversal" && st.suite != "all")
-        throw Error("unknown suite '" + st.suite + "' (parse, traversal, volumes, all)");
+        throw Error("unknown suite '" + st.suite + "' (parse, traversal, volumes, node, all)");
     return 0;
 }
 

@@ -24,8 +24,10 @@ struct SlicingStats {
     int planes = 0;                 ///< proxy planes of the layout (over the whole volume box)
     double planeSpacing = 0.0;      ///< eye units between neighbouring planes
     std::size_t sliceTriangles = 0; ///< triangles drawn, all bricks together
-    /// Wall time of the CPU work before any draw is issued: state, plane layout, brick order,
-    /// cutting, vertex assembly (and table rebuilds when a transfer function changed).
+    /// Per-frame CPU work of the node, on a steady clock: the Volume node gathering its state
+    /// (data, transfer functions, clips) and the slicer's work before any draw is issued (plane
+    /// layout, brick order and emptiness, cutting, vertex assembly, and table rebuilds when a
+    /// transfer function changed). No GL execution: no draw, no readback, no glFinish.
     double cpuMilliseconds = 0.0;
     /// Wall time of issuing the GL work: brick uploads, uniforms, draws (including any wait
     /// in the driver; llvmpipe may block here on earlier rendering).
