@@ -9,6 +9,9 @@ find_package(ZLIB REQUIRED)
 # (ENVIRONMENT.md 4).
 find_package(TinyGLTF REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
+# Dear ImGui for the viewer's editor panels: Debian ships a static libimgui.a with the GLFW and
+# OpenGL3 backends compiled in and no CMake config (ENVIRONMENT.md 6).
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 if(VOLSG_BUILD_TESTS)
   find_package(doctest REQUIRED)
 endif()

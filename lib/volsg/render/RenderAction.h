@@ -55,6 +55,10 @@ public:
     void setPass(RenderPass pass) { pass_ = pass; }
     /// The user is moving the view: volumes use their fast settings.
     bool isInteractive() const { return interactive_; }
+    /// While interactive: the factor on the volumes' interactive plane count
+    /// (RenderOptions::interactivePlaneScale).
+    double interactivePlaneScale() const { return interactivePlaneScale_; }
+    void setInteractivePlaneScale(double scale) { interactivePlaneScale_ = scale; }
 
     const RenderView& view() const { return view_; }
     const glm::dmat4& viewMatrix() const { return view_.view; }
@@ -85,6 +89,7 @@ private:
     RenderTarget& target_;
     RenderView view_;
     bool interactive_;
+    double interactivePlaneScale_ = 1.0;
     RenderPass pass_ = RenderPass::Opaque;
 };
 

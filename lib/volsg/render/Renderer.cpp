@@ -160,6 +160,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     cache.beginFrame();
     shapes.beginFrame(view);
     RenderAction action(cache, shapes, target, view, options.interactive);
+    action.setInteractivePlaneScale(options.interactivePlaneScale);
     for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
         if (options.opaqueOnly && pass != RenderPass::Opaque) break;
         setPassState(pass);

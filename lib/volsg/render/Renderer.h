@@ -20,6 +20,9 @@ struct RenderOptions {
     int height = 512;
     glm::vec3 background{0.0f};
     bool interactive = false; ///< the user is moving the view: volumes use their fast settings
+    /// While interactive, volumes multiply their interactive plane count by this (in (0, 1]):
+    /// the viewer lowers it when interactive frames are still too slow.
+    double interactivePlaneScale = 1.0;
     ref_ptr<Camera> camera;   ///< overrides the scene's camera when set (model matrix = identity)
     bool opaqueOnly = false;  ///< only the Opaque pass: no volumes, no transparent shapes
 };

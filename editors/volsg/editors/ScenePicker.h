@@ -1,0 +1,31 @@
+#pragma once
+// What is under the mouse: the nearest shape (PickAction) or volume box along a world ray, so
+// that clicking selects any object of the scene, volumes included (RTVR's "click an object to
+// make it active").
+
+#include <optional>
+#include <vector>
+
+#include <volsg/core/Node.h>
+#include <volsg/math/Ray.h>
+
+namespace volsg {
+
+struct ScenePick {
+    Node* node = nullptr;    ///< the shape or Volume hit
+    std::vector<Node*> path; ///< from the root to it
+    glm::dvec3 point{0.0};   ///< world coordinates
+    double distance = 0.0;   ///< along the (unit) world ray
+    bool isVolume = false;
+};
+
+/// The nearest hit along `worldRay` (its direction need not be unit) among shapes and the
+/// boxes of Volume nodes (with the VolumeData in their scope), between near and far.
+std::optional<ScenePick> pickScene(Node& root, const Ray& worldRay, double nearDistance = 0.0,
+                                   double farDistance = 1e300);
+
+/// The node of type T nearest in scope at the first place `target` is reached in traversal
+/// order (what a render uses for it: e.g. the TransferFunction of a Volume), or null.
+Node* nearestInScope(Node& root, const Node& target, const NodeType& type);
+
+} // namespace volsg

@@ -1,0 +1,171 @@
+// The material editor, the generated field panel, picking objects (volumes included) and the
+// RTVR drag that changes an active object's opacity and contrast.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include <volsg/editors/ActiveObjectDrag.h>
+#include <volsg/editors/EditHistory.h>
+#include <volsg/editors/FieldPanelModel.h>
+#include <volsg/editors/MaterialEditor.h>
+#include <volsg/editors/ScenePicker.h>
+#include <volsg/io/SceneReader.h>
+#include <volsg/nodes/BoxClip.h>
+#include <volsg/nodes/Cube.h>
+#include <volsg/nodes/Material.h>
+#include <volsg/nodes/TransferFunction.h>
+#include <volsg/nodes/Volume.h>
+#include <volsg/volume/TransferFunction1D.h>
+
+using namespace volsg;
+
+namespace {
+// A 2-unit cube at x = -3 and a 16^3 volume (spacing 1/8: a 2-unit box) at x = +3.
+const char* twoObjects = "#Inventor V2.1 ascii\n"
+                         "Separator {\n"
+                         "  Separator {\n"
+                         "    Transform { translation -3 0 0 }\n"
+                         "    DEF cubeMaterial Material { transparency 0.2 }\n"
+                         "    DEF cube Cube { }\n"
+                         "  }\n"
+                         "  Separator {\n"
+                         "    Transform { translation 3 0 0 }\n"
+                         "    VolumeData { generator SOFT_SPHERE dimensions 16 16 16 "
+                         "spacing 0.125 0.125 0.125 }\n"
+                         "    DEF tf TransferFunction { }\n"
+                         "    DEF volume Volume { }\n"
+                         "  }\n"
+                         "}\n";
+
+Node* named(Node& root, const char* name) {
+    std::vector<Node*> stack{&root};
+    while (!stack.empty()) {
+        Node* n = stack.back();
+        stack.pop_back();
+        if (n->getName() == name) return n;
+        if (auto* c = n->children())
+            for (auto& child : *c)
+                stack.push_back(child.get());
+    }
+    return nullptr;
+}
+} // namespace
+
+TEST_CASE("the material editor edits a Material's colours and a BoxClip's inside and outside") {
+    EditHistory history;
+    MaterialEditor editor(history);
+    auto material = Material::create();
+    REQUIRE(editor.setNode(material.get()));
+    CHECK(editor.properties().size() == 6);
+    editor.setColor(1, {0.1f, 0.2f, 0.3f}); // diffuse
+    CHECK(material->diffuseColor[0] == glm::vec3(0.1f, 0.2f, 0.3f));
+    editor.beginChange(5); // a transparency slider held down
+    editor.setScalar(5, 0.3f);
+    editor.setScalar(5, 0.6f);
+    editor.endChange();
+    CHECK(material->transparency[0] == doctest::Approx(0.6f));
+    CHECK(history.size() == 2);
+    history.undo();
+    CHECK(material->transparency[0] == 0.0f);
+
+    auto box = BoxClip::create();
+    REQUIRE(editor.setNode(box.get()));
+    editor.setColor(0, {1.0f, 0.0f, 0.0f});
+    editor.setScalar(1, 0.5f);
+    editor.setScalar(5, 7.0f); // outside opacity: clamped to the editor's range
+    CHECK(box->insideColor() == glm::vec3(1.0f, 0.0f, 0.0f));
+    CHECK(box->insideColorWeight() == 0.5f);
+    CHECK(box->outsideOpacity() == 4.0f);
+    CHECK_FALSE(editor.setNode(Cube::create().get()));
+    CHECK(editor.properties().empty());
+}
+
+TEST_CASE("the field panel lists every field with its widget and sets values from text") {
+    EditHistory history;
+    FieldPanelModel panel(history);
+    auto volume = Volume::create();
+    panel.setNode(volume.get());
+    REQUIRE(panel.entries().size() == volume->fieldCount());
+    CHECK(panel.entries()[0].kind == FieldPanelModel::Kind::Enum); // renderMode
+    CHECK(panel.entries()[1].kind == FieldPanelModel::Kind::Int);  // numPlanes
+    CHECK(panel.entries()[4].kind == FieldPanelModel::Kind::Bool); // preIntegrated
+    CHECK(panel.entries()[6].kind == FieldPanelModel::Kind::Text); // planeOpacity (MFVec2f)
+    std::string error;
+    CHECK(panel.setText(6, "[ 0 0.5, 1 2 ]", &error));
+    CHECK(volume->planeOpacity.getValues() == std::vector<glm::vec2>{{0, 0.5f}, {1, 2}});
+    CHECK_FALSE(panel.setText(1, "many", &error));
+    CHECK(error.find("numPlanes") != std::string::npos);
+    CHECK(volume->numPlanes.isDefault());
+    panel.change(1, [&] { volume->numPlanes = 64; });
+    CHECK(volume->numPlanes() == 64);
+    CHECK(history.size() == 2);
+    history.undo();
+    history.undo();
+    CHECK(volume->planeOpacity.isDefault());
+}
+
+TEST_CASE("picking finds the shape or the volume box under the ray") {
+    ref_ptr<Node> root = readSceneFromString(twoObjects);
+    const auto cube = pickScene(*root, Ray{{-3.0, 0.0, 10.0}, {0.0, 0.0, -1.0}});
+    REQUIRE(cube.has_value());
+    CHECK(cube->node == named(*root, "cube"));
+    CHECK_FALSE(cube->isVolume);
+    CHECK(cube->distance == doctest::Approx(9.0).epsilon(1e-9));
+    const auto volume = pickScene(*root, Ray{{3.5, 0.5, 10.0}, {0.0, 0.0, -2.0}});
+    REQUIRE(volume.has_value());
+    CHECK(volume->node == named(*root, "volume"));
+    CHECK(volume->isVolume);
+    CHECK(volume->distance == doctest::Approx(9.0).epsilon(1e-9)); // box face at z = 1
+    CHECK_FALSE(pickScene(*root, Ray{{0.0, 0.0, 10.0}, {0.0, 0.0, -1.0}}).has_value());
+    // The transfer function in the volume's scope is the one a drag edits.
+    CHECK(nearestInScope(*root, *volume->node, TransferFunction::classType()) ==
+          named(*root, "tf"));
+}
+
+TEST_CASE("dragging a volume up makes it more opaque and right raises its contrast") {
+    EditHistory history;
+    ActiveObjectDrag drag(history);
+    ref_ptr<Node> root = readSceneFromString(twoObjects);
+    auto* tf = static_cast<TransferFunction*>(named(*root, "tf"));
+    REQUIRE(drag.begin(*root, *named(*root, "volume")));
+    CHECK(drag.target() == tf);
+    // 100 px up: opacity times 2 (clamped to 1); the ramp 0..1 reaches 1 at v = 0.5.
+    drag.update({0.0, -ActiveObjectDrag::pixelsPerDoubling});
+    CHECK(tf->function().evaluate(TransferFunction1D::Alpha, 0.25) ==
+          doctest::Approx(0.5).epsilon(1e-6));
+    CHECK(tf->function().evaluate(TransferFunction1D::Alpha, 0.75) ==
+          doctest::Approx(1.0).epsilon(1e-6));
+    // Instead 100 px right: contrast times 2 about v = 0.5: the ramp runs over [0.25, 0.75].
+    drag.update({ActiveObjectDrag::pixelsPerDoubling, 0.0});
+    CHECK(tf->function().evaluate(TransferFunction1D::Alpha, 0.25) ==
+          doctest::Approx(0.0).epsilon(1e-6));
+    CHECK(tf->function().evaluate(TransferFunction1D::Alpha, 0.625) ==
+          doctest::Approx(0.75).epsilon(1e-6));
+    drag.end();
+    CHECK(history.size() == 1);
+    history.undo();
+    CHECK(tf->alpha.isDefault());
+}
+
+TEST_CASE("lower contrast keeps the curve's values at the ends of the range") {
+    const auto gentler =
+        ActiveObjectDrag::scaleContrast({{0.25f, 0.0f}, {0.75f, 1.0f}}, 0.5); // over [0, 1]
+    REQUIRE(gentler.size() >= 2);
+    CHECK(gentler.front() == glm::vec2(0.0f, 0.0f));
+    CHECK(gentler.back() == glm::vec2(1.0f, 1.0f));
+    const auto widest = ActiveObjectDrag::scaleContrast({{0.0f, 0.0f}, {1.0f, 1.0f}}, 0.5);
+    // The ramp now spans [-0.5, 1.5]: at the range ends it reaches 0.25 and 0.75.
+    CHECK(widest.front().y == doctest::Approx(0.25f).epsilon(1e-6));
+    CHECK(widest.back().y == doctest::Approx(0.75f).epsilon(1e-6));
+}
+
+TEST_CASE("dragging a shape down makes its material more transparent") {
+    EditHistory history;
+    ActiveObjectDrag drag(history);
+    ref_ptr<Node> root = readSceneFromString(twoObjects);
+    auto* material = static_cast<Material*>(named(*root, "cubeMaterial"));
+    REQUIRE(drag.begin(*root, *named(*root, "cube")));
+    drag.update({0.0, ActiveObjectDrag::pixelsPerDoubling}); // opacity 0.8 -> 0.4
+    CHECK(material->transparency[0] == doctest::Approx(0.6f).epsilon(1e-6));
+    drag.end();
+}

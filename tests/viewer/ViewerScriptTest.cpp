@@ -1,0 +1,63 @@
+// The viewer's input scripts: what each command becomes, and errors with their line.
+#include <doctest/doctest.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <volsg/core/Error.h>
+
+#include "view/ViewerScript.h"
+
+using namespace volsg;
+
+TEST_CASE("a drag becomes a move, a press, evenly spaced moves and a release") {
+    const auto steps = parseViewerScript("drag right 10 20 50 100 4 shift\n", "s.txt");
+    REQUIRE(steps.size() == 7);
+    CHECK(steps[0].kind == ScriptStep::Kind::Move);
+    CHECK(steps[1].kind == ScriptStep::Kind::Press);
+    CHECK(steps[1].button == GLFW_MOUSE_BUTTON_RIGHT);
+    CHECK(steps[1].mods == GLFW_MOD_SHIFT);
+    for (int i = 1; i <= 4; ++i) {
+        CHECK(steps[std::size_t(1 + i)].kind == ScriptStep::Kind::Move);
+        CHECK(steps[std::size_t(1 + i)].point.value.x == doctest::Approx(10.0 + 10.0 * i));
+        CHECK(steps[std::size_t(1 + i)].point.value.y == doctest::Approx(20.0 + 20.0 * i));
+    }
+    CHECK(steps[6].kind == ScriptStep::Kind::Release);
+    CHECK(steps[6].point.value.x == 50.0);
+}
+
+TEST_CASE("script points name canvases and world points") {
+    const auto steps = parseViewerScript("# comment line\n"
+                                         "move tf:0.25,0.5\n"
+                                         "move world:1,-2,3.5   # trailing comment\n"
+                                         "screenshot out.png scene\n"
+                                         "key s ctrl\n"
+                                         "wait 3\n",
+                                         "s.txt");
+    REQUIRE(steps.size() == 5);
+    CHECK(steps[0].point.kind == ScriptPoint::Kind::Canvas);
+    CHECK(steps[0].point.canvas == "tf");
+    CHECK(steps[0].point.value.y == 0.5);
+    CHECK(steps[1].point.kind == ScriptPoint::Kind::World);
+    CHECK(steps[1].point.value == glm::dvec3(1.0, -2.0, 3.5));
+    CHECK(steps[2].sceneOnly);
+    CHECK(steps[3].mods == GLFW_MOD_CONTROL);
+    CHECK(keyCodeOf(steps[3].text) == GLFW_KEY_S);
+    CHECK(steps[4].frames == 3);
+    CHECK(steps[4].line == 6);
+}
+
+TEST_CASE("a bad script line is an error naming the file and line") {
+    try {
+        parseViewerScript("wait 1\nwait 2\njump 3 4\n", "bad.txt");
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.file() == "bad.txt");
+        CHECK(e.line() == 3);
+        CHECK(e.message().find("jump") != std::string::npos);
+    }
+    CHECK_THROWS_AS(parseViewerScript("drag left 1 2 3\n", "s"), Error);  // a point short
+    CHECK_THROWS_AS(parseViewerScript("move nowhere:1,2\n", "s"), Error); // unknown place
+    CHECK_THROWS_AS(parseViewerScript("key hyper\n", "s"), Error);        // unknown key
+    CHECK_THROWS_AS(parseViewerScript("press left 1 2 sideways\n", "s"), Error);
+}

@@ -1,0 +1,71 @@
+// volsg-view: shows a scene in a window with examiner navigation, manipulators and the editor
+// panels; `--script FILE` plays recorded input (see view/ViewerScript.h).
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "CommandLine.h"
+#include "view/Viewer.h"
+#include <volsg/core/Error.h>
+
+namespace {
+
+const char* usage =
+    "usage: volsg-view SCENE [--script FILE] [--size WxH] [--background R,G,B] [--antialias]\n"
+    "                  [--no-panels]\n"
+    "  mouse: left drag rotate, middle or shift+left pan, right or alt+left dolly, wheel dolly,\n"
+    "         ctrl+wheel zoom (view angle),\n"
+    "         click select, ctrl+left drag on an object: opacity (up/down) and contrast\n"
+    "         (left/right), drag a manipulator's handles to move them\n"
+    "  keys:  v view all, h home, o perspective/orthographic, a antialiasing, s seek (then\n"
+    "         click), m manipulator on the selected ClipPlane/BoxClip/Transform, ctrl+s save,\n"
+    "         p screenshot, z/x zoom in/out, ctrl+z undo, ctrl+y redo, F1 panels, escape\n"
+    "         deselect, q quit\n"
+    "  The scene reloads when its file changes.\n";
+
+int run(int argc, char** argv) {
+    volsg::cli::Arguments args(argc, argv);
+    volsg::ViewerOptions options;
+    while (!args.empty()) {
+        const std::string a = args.take();
+        if (a == "--script")
+            options.scriptPath = args.value(a);
+        else if (a == "--size") {
+            const glm::ivec2 s = volsg::cli::parseSize(args.value(a));
+            options.width = s.x;
+            options.height = s.y;
+        } else if (a == "--background")
+            options.background = volsg::cli::parseColor(args.value(a));
+        else if (a == "--antialias")
+            options.antialias = true;
+        else if (a == "--no-panels")
+            options.panels = false;
+        else if (a == "-h" || a == "--help") {
+            std::fputs(usage, stdout);
+            return 0;
+        } else if (!a.empty() && a[0] == '-')
+            throw volsg::Error("unknown option '" + a + "'");
+        else if (options.scenePath.empty())
+            options.scenePath = a;
+        else
+            throw volsg::Error("more than one scene file given ('" + options.scenePath + "', '" +
+                               a + "')");
+    }
+    if (options.scenePath.empty()) {
+        std::fputs(usage, stderr);
+        return 2;
+    }
+    volsg::Viewer viewer(options);
+    return viewer.run();
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "volsg-view: %s\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,864 @@
+// glad first; GLFW must not include a GL header of its own.
+#include <glad/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "Viewer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <volsg/actions/BoundingBoxAction.h>
+#include <volsg/actions/PickAction.h>
+#include <volsg/actions/SearchAction.h>
+#include <volsg/context/GlfwWindow.h>
+#include <volsg/core/Error.h>
+#include <volsg/editors/ScenePicker.h>
+#include <volsg/editors/panels/MaterialPanel.h>
+#include <volsg/editors/panels/PlaneOpacityPanel.h>
+#include <volsg/image/Image.h>
+#include <volsg/io/SceneReader.h>
+#include <volsg/io/SceneWriter.h>
+#include <volsg/manipulators/BoxClipManip.h>
+#include <volsg/manipulators/ClipPlaneManip.h>
+#include <volsg/manipulators/DragMath.h>
+#include <volsg/manipulators/TransformManip.h>
+#include <volsg/nodes/BoxClip.h>
+#include <volsg/nodes/Camera.h>
+#include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/Material.h>
+#include <volsg/nodes/Shape.h>
+#include <volsg/nodes/TransferFunction.h>
+#include <volsg/nodes/Transform.h>
+#include <volsg/nodes/Volume.h>
+#include <volsg/render/Renderer.h>
+
+namespace volsg {
+
+namespace {
+
+constexpr double kClickSlop = 3.0; // pixels a press may move and still be a click
+
+Viewer* viewerOf(GLFWwindow* w) {
+    return static_cast<Viewer*>(glfwGetWindowUserPointer(w));
+}
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error("cannot open '" + path + "'");
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// The plain node a manipulator stands in for, or the node itself.
+Node* originalOf(Node* node) {
+    if (auto* m = dynamic_cast<Manipulator*>(node))
+        if (m->original()) return m->original();
+    return node;
+}
+
+std::vector<Field*> textFieldsOf(Node& node) {
+    std::vector<Field*> out;
+    for (std::size_t i = 0; i < node.fieldCount(); ++i)
+        out.push_back(node.fieldAt(i));
+    return out;
+}
+
+} // namespace
+
+Viewer::Viewer(ViewerOptions options) : options_(std::move(options)) {
+    if (!options_.scriptPath.empty())
+        script_ = parseViewerScript(readText(options_.scriptPath), options_.scriptPath);
+    root_ = readScene(options_.scenePath);
+    sceneTime_ = std::filesystem::last_write_time(options_.scenePath);
+
+    GlfwWindowOptions windowOptions;
+    windowOptions.width = options_.width;
+    windowOptions.height = options_.height;
+    windowOptions.title = "volsg-view " + options_.scenePath;
+    window_ = std::make_unique<GlfwWindow>(windowOptions);
+    glfwSwapInterval(0);
+    renderer_ = std::make_unique<Renderer>();
+
+    GLFWwindow* w = window_->handle();
+    glfwSetWindowUserPointer(w, this);
+    glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
+        viewerOf(win)->onMouseMove({x, y});
+    });
+    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int mods) {
+        viewerOf(win)->onMouseButton(button, action == GLFW_PRESS, mods);
+    });
+    glfwSetScrollCallback(w,
+                          [](GLFWwindow* win, double, double dy) { viewerOf(win)->onScroll(dy); });
+    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
+        if (action == GLFW_PRESS || action == GLFW_REPEAT) viewerOf(win)->onKey(key, mods);
+    });
+
+    // ImGui chains to the callbacks above (installed first).
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr; // the same layout on every run (and in tests)
+    ImGui::GetIO().ConfigWindowsMoveFromTitleBarOnly = true; // drags in a panel never move it
+    ImGui::StyleColorsDark();
+    if (!ImGui_ImplGlfw_InitForOpenGL(w, true) || !ImGui_ImplOpenGL3_Init("#version 330 core"))
+        throw Error("Dear ImGui could not start on this GL context");
+
+    loadScene();
+    setupCamera();
+}
+
+Viewer::~Viewer() {
+    window_->makeCurrent();
+    detachAll();
+    supersampleTarget_ = Framebuffer();
+    supersampleColor_ = Renderbuffer();
+    renderer_.reset();
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+void Viewer::loadScene() {
+    manipulators_.clear();
+    history_.clear();
+    activeDrag_.end();
+    select(nullptr);
+    tfEditor_.setScene(root_.get());
+    // The plane-opacity editor starts on the first volume, so it shows something at once.
+    const auto volumes = findAll(*root_, Volume::classType());
+    planeEditor_.setVolume(volumes.empty() ? nullptr : static_cast<Volume*>(volumes.front()));
+}
+
+void Viewer::setupCamera() {
+    const glm::ivec2 size = window_->size();
+    const double aspect = double(std::max(size.x, 1)) / double(std::max(size.y, 1));
+    SceneCamera scene = findOrMakeCamera(*root_, aspect);
+    const auto cameras = findAll(*root_, Camera::classType());
+    ref_ptr<Camera> camera;
+    if (!cameras.empty()) {
+        // A copy in world coordinates: navigation never changes the scene until it is saved.
+        camera = ref_ptr<Node>(scene.camera->type().create()).cast<Camera>();
+        copyFieldValues(*scene.camera, *camera);
+        const glm::dmat3 m(scene.model);
+        camera->position =
+            glm::vec3(scene.model * glm::dvec4(glm::dvec3(scene.camera->position()), 1.0));
+        const glm::dquat turn = glm::quat_cast(
+            glm::dmat3(glm::normalize(m[0]), glm::normalize(m[1]), glm::normalize(m[2])));
+        camera->orientation = rotationFromQuat(turn * scene.camera->orientation().quat());
+    } else {
+        camera = scene.camera;
+    }
+    navigation_ = std::make_unique<ExaminerNavigation>(camera, size.x, size.y);
+    navigation_->adjustClipping(sceneBox());
+    navigation_->saveHome();
+}
+
+Box3 Viewer::sceneBox() {
+    try {
+        return computeBoundingBox(*root_);
+    } catch (const Error&) {
+        return Box3{};
+    }
+}
+
+void Viewer::status(const std::string& message) {
+    statusText_ = message;
+    std::fprintf(stderr, "volsg-view: %s\n", message.c_str());
+}
+
+// ---- input ----------------------------------------------------------------------------------
+
+void Viewer::onMouseMove(glm::dvec2 position) {
+    events_.push_back({PendingEvent::Kind::Move, position});
+}
+
+void Viewer::onMouseButton(int button, bool pressed, int mods) {
+    PendingEvent e{PendingEvent::Kind::Button, mouse_};
+    e.button = button;
+    e.pressed = pressed;
+    e.mods = mods;
+    events_.push_back(e);
+}
+
+void Viewer::onScroll(double dy) {
+    PendingEvent e{PendingEvent::Kind::Scroll, mouse_};
+    e.scroll = dy;
+    events_.push_back(e);
+}
+
+void Viewer::onKey(int key, int mods) {
+    PendingEvent e{PendingEvent::Kind::Key, mouse_};
+    e.key = key;
+    e.mods = mods;
+    events_.push_back(e);
+}
+
+bool Viewer::isInteracting() const {
+    if (drag_ != Drag::None && drag_ != Drag::Pending) return true;
+    // Dragging in an editor canvas or on a slider counts too: the render should keep up.
+    return ImGui::GetCurrentContext() && ImGui::IsAnyItemActive() && ImGui::IsMouseDown(0);
+}
+
+void Viewer::handleSceneEvents() {
+    const ImGuiIO& io = ImGui::GetIO();
+    for (const PendingEvent& e : events_) {
+        switch (e.kind) {
+        case PendingEvent::Kind::Move:
+            break;
+        case PendingEvent::Kind::Button:
+            if (e.pressed && drag_ == Drag::None && !io.WantCaptureMouse) {
+                mouse_ = e.position;
+                beginSceneDrag(e.button, e.mods);
+            } else if (!e.pressed && e.button == dragButton_) {
+                endSceneDrag();
+            }
+            break;
+        case PendingEvent::Kind::Scroll:
+            if (io.WantCaptureMouse) break;
+            if (glfwGetKey(window_->handle(), GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS)
+                navigation_->zoom(std::pow(0.9, e.scroll)); // the view angle, not the distance
+            else
+                navigation_->dolly(std::pow(0.9, e.scroll));
+            break;
+        case PendingEvent::Kind::Key:
+            if (!io.WantCaptureKeyboard) {
+                const bool ctrl = (e.mods & GLFW_MOD_CONTROL) != 0;
+                const bool shift = (e.mods & GLFW_MOD_SHIFT) != 0;
+                switch (e.key) {
+                case GLFW_KEY_S:
+                    if (ctrl)
+                        saveScene(options_.scenePath);
+                    else
+                        seekMode_ = !seekMode_;
+                    break;
+                case GLFW_KEY_Z:
+                    if (ctrl)
+                        (shift ? history_.redo() : history_.undo());
+                    else
+                        navigation_->zoom(0.8);
+                    break;
+                case GLFW_KEY_X:
+                    navigation_->zoom(1.25);
+                    break;
+                case GLFW_KEY_Y:
+                    if (ctrl) history_.redo();
+                    break;
+                case GLFW_KEY_V:
+                    navigation_->viewAll(sceneBox());
+                    break;
+                case GLFW_KEY_H:
+                    navigation_->goHome();
+                    break;
+                case GLFW_KEY_O:
+                    navigation_->toggleProjection();
+                    break;
+                case GLFW_KEY_A:
+                    options_.antialias = !options_.antialias;
+                    break;
+                case GLFW_KEY_M:
+                    toggleManipulator();
+                    break;
+                case GLFW_KEY_P:
+                    screenshot("volsg-view-" + std::to_string(++screenshotCount_) + ".png", false);
+                    break;
+                case GLFW_KEY_F1:
+                    options_.panels = !options_.panels;
+                    break;
+                case GLFW_KEY_ESCAPE:
+                    select(nullptr);
+                    break;
+                case GLFW_KEY_Q:
+                    quit_ = true;
+                    break;
+                default:
+                    break;
+                }
+            }
+            break;
+        }
+    }
+    if (drag_ != Drag::None && mouse_ != lastMouse_) continueSceneDrag();
+}
+
+void Viewer::beginSceneDrag(int button, int mods) {
+    dragStart_ = lastMouse_ = mouse_;
+    dragButton_ = button;
+    const Ray ray = navigation_->pixelRay(mouse_);
+    const bool shift = mods & GLFW_MOD_SHIFT, ctrl = mods & GLFW_MOD_CONTROL,
+               alt = mods & GLFW_MOD_ALT;
+    if (button == GLFW_MOUSE_BUTTON_LEFT && !shift && !ctrl && !alt) {
+        if (!manipulators_.empty()) {
+            PickAction pick;
+            pick.setRay(ray);
+            pick.apply(*root_);
+            if (pick.picked())
+                for (Attached& a : manipulators_)
+                    if (a.manipulator->beginDrag(ray, pick.picked()->path)) {
+                        drag_ = Drag::Manipulator;
+                        draggedManipulator_ = a.manipulator;
+                        history_.begin(std::string("drag ") + a.node->type().name(),
+                                       textFieldsOf(*a.manipulator->original()));
+                        return;
+                    }
+        }
+        if (seekMode_) {
+            seekMode_ = false;
+            if (const auto hit = pickScene(*root_, ray)) navigation_->seek(hit->point);
+            dragButton_ = -1;
+            return;
+        }
+        drag_ = Drag::Pending;
+    } else if (button == GLFW_MOUSE_BUTTON_LEFT && ctrl) {
+        // RTVR: drag on an object to change its opacity (vertical) and contrast (horizontal).
+        const auto hit = pickScene(*root_, ray);
+        if (hit && activeDrag_.begin(*root_, *hit->node)) {
+            select(hit->node);
+            drag_ = Drag::ActiveObject;
+        } else {
+            dragButton_ = -1;
+        }
+    } else if (button == GLFW_MOUSE_BUTTON_MIDDLE || (button == GLFW_MOUSE_BUTTON_LEFT && shift)) {
+        drag_ = Drag::Pan;
+    } else if (button == GLFW_MOUSE_BUTTON_RIGHT || (button == GLFW_MOUSE_BUTTON_LEFT && alt)) {
+        drag_ = Drag::Dolly;
+    } else {
+        dragButton_ = -1;
+    }
+}
+
+void Viewer::continueSceneDrag() {
+    switch (drag_) {
+    case Drag::Pending:
+        if (glm::length(mouse_ - dragStart_) <= kClickSlop) return;
+        drag_ = Drag::Rotate;
+        navigation_->rotate(dragStart_, mouse_);
+        break;
+    case Drag::Rotate:
+        navigation_->rotate(lastMouse_, mouse_);
+        break;
+    case Drag::Pan:
+        navigation_->pan(lastMouse_, mouse_);
+        break;
+    case Drag::Dolly:
+        navigation_->dolly(std::exp((mouse_.y - lastMouse_.y) * 0.01));
+        break;
+    case Drag::Manipulator:
+        draggedManipulator_->drag(navigation_->pixelRay(mouse_));
+        break;
+    case Drag::ActiveObject:
+        activeDrag_.update(mouse_ - dragStart_);
+        break;
+    case Drag::None:
+        break;
+    }
+    lastMouse_ = mouse_;
+}
+
+void Viewer::endSceneDrag() {
+    if (drag_ == Drag::Pending) { // a click: select what is under the mouse
+        const auto hit = pickScene(*root_, navigation_->pixelRay(mouse_));
+        select(hit ? hit->node : nullptr);
+    } else if (drag_ == Drag::Manipulator) {
+        draggedManipulator_->endDrag();
+        draggedManipulator_ = nullptr;
+        history_.commit();
+    } else if (drag_ == Drag::ActiveObject) {
+        activeDrag_.end();
+    }
+    drag_ = Drag::None;
+    dragButton_ = -1;
+}
+
+void Viewer::select(Node* node) {
+    node = originalOf(node);
+    selected_ = ref_ptr<Node>(node);
+    fieldPanel_.setNode(node);
+    Node* material = nullptr;
+    if (node && (node->isA<Material>() || node->isA<BoxClip>()))
+        material = node;
+    else if (node && node->isA<Volume>())
+        material = nearestInScope(*root_, *node, BoxClip::classType());
+    else if (node && node->isA<Shape>())
+        material = nearestInScope(*root_, *node, Material::classType());
+    materialEditor_.setNode(material);
+    if (node && node->isA<Volume>()) {
+        planeEditor_.setVolume(static_cast<Volume*>(node));
+        if (Node* tf = nearestInScope(*root_, *node, TransferFunction::classType()))
+            tfEditor_.selectTag(static_cast<TransferFunction*>(tf)->tag());
+    }
+    if (node && node->isA<TransferFunction>())
+        tfEditor_.selectTag(static_cast<TransferFunction*>(node)->tag());
+}
+
+// ---- manipulators ---------------------------------------------------------------------------
+
+void Viewer::toggleManipulator() {
+    Node* node = selected_.get();
+    if (!node) {
+        status("select a ClipPlane, BoxClip or Transform to manipulate it");
+        return;
+    }
+    for (auto it = manipulators_.begin(); it != manipulators_.end(); ++it)
+        if (it->manipulator->original() == node) {
+            it->manipulator->detach();
+            manipulators_.erase(it);
+            return;
+        }
+    ref_ptr<Node> manipNode;
+    Manipulator* manip = nullptr;
+    if (node->isA<ClipPlane>()) {
+        auto m = ClipPlaneManip::create();
+        manip = m.get();
+        manipNode = m;
+    } else if (node->isA<BoxClip>()) {
+        auto m = BoxClipManip::create();
+        manip = m.get();
+        manipNode = m;
+    } else if (node->isA<Transform>()) {
+        auto m = TransformManip::create();
+        manip = m.get();
+        manipNode = m;
+    } else {
+        status(std::string("no manipulator for a ") + node->type().name());
+        return;
+    }
+    if (!manip->attach(*root_, *node)) return;
+    manipulators_.push_back({manipNode, manip, node->version()});
+    syncManipulators();
+}
+
+void Viewer::syncManipulators() {
+    const Box3 box = sceneBox();
+    const double size = box.isEmpty() ? 1.0 : 0.6 * glm::length(box.size());
+    for (Attached& a : manipulators_) {
+        a.manipulator->setHandleSize(size);
+        if (!box.isEmpty()) a.manipulator->setAnchor(box.center());
+        Node* original = a.manipulator->original();
+        if (original && original->version() != a.originalVersion) {
+            // An editor or undo changed the plain node: the manipulator shows it.
+            if (!a.manipulator->isDragging()) copyFieldValues(*original, *a.node);
+            a.originalVersion = original->version();
+        }
+    }
+}
+
+void Viewer::detachAll() {
+    for (Attached& a : manipulators_)
+        a.manipulator->detach();
+}
+
+void Viewer::reattach(const std::vector<ref_ptr<Node>>& originals) {
+    for (std::size_t i = 0; i < manipulators_.size() && i < originals.size(); ++i)
+        if (originals[i]) manipulators_[i].manipulator->attach(*root_, *originals[i]);
+}
+
+// ---- saving, screenshots, reloading ---------------------------------------------------------
+
+void Viewer::writeViewToSceneCamera() {
+    const auto cameras = findAll(*root_, Camera::classType());
+    if (cameras.empty()) return;
+    const SceneCamera scene = findOrMakeCamera(*root_, 1.0);
+    Camera& target = *scene.camera;
+    const Camera& view = navigation_->camera();
+    // World pose back into the camera's own coordinates (a rigid model matrix above it).
+    const glm::dmat4 toLocal = glm::inverse(scene.model);
+    const glm::dmat3 m(toLocal);
+    const glm::dquat turn = glm::quat_cast(
+        glm::dmat3(glm::normalize(m[0]), glm::normalize(m[1]), glm::normalize(m[2])));
+    target.position = glm::vec3(toLocal * glm::dvec4(glm::dvec3(view.position()), 1.0));
+    target.orientation = rotationFromQuat(turn * view.orientation().quat());
+    target.focalDistance = view.focalDistance();
+    target.nearDistance = view.nearDistance();
+    target.farDistance = view.farDistance();
+    if (auto* p = dynamic_cast<PerspectiveCamera*>(&target))
+        if (auto* v = dynamic_cast<const PerspectiveCamera*>(&view))
+            p->heightAngle = v->heightAngle();
+    if (auto* o = dynamic_cast<OrthographicCamera*>(&target))
+        if (auto* v = dynamic_cast<const OrthographicCamera*>(&view)) o->height = v->height();
+}
+
+void Viewer::saveScene(const std::string& path) {
+    std::vector<ref_ptr<Node>> originals;
+    for (Attached& a : manipulators_)
+        originals.emplace_back(a.manipulator->original());
+    detachAll(); // the file holds the plain nodes, as Inventor's manipulators leave them
+    try {
+        writeViewToSceneCamera();
+        writeSceneToFile(path, *root_);
+        status("saved " + path);
+    } catch (const Error& e) {
+        status(std::string("saving failed: ") + e.what());
+        exitStatus_ = 1;
+    }
+    reattach(originals);
+    std::error_code ec;
+    if (std::filesystem::equivalent(path, options_.scenePath, ec))
+        sceneTime_ = std::filesystem::last_write_time(options_.scenePath, ec);
+}
+
+void Viewer::screenshot(const std::string& path, bool sceneOnly) {
+    const glm::ivec2 size = window_->size();
+    Image image;
+    if (sceneOnly) {
+        RenderOptions o;
+        o.width = size.x;
+        o.height = size.y;
+        o.background = options_.background;
+        o.camera = navigation_->cameraPtr();
+        image = renderer_->render(*root_, o);
+    } else {
+        // The back buffer as drawn this frame (the front buffer reads black under GLX).
+        std::vector<unsigned char> rgba(std::size_t(size.x) * std::size_t(size.y) * 4);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        glReadBuffer(GL_BACK);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+        image = Image(size.x, size.y);
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                const unsigned char* p =
+                    &rgba[(std::size_t(size.y - 1 - y) * std::size_t(size.x) + std::size_t(x)) * 4];
+                image.at(x, y) = glm::vec4(p[0], p[1], p[2], 255) / 255.0f;
+            }
+    }
+    try {
+        writePng(path, image);
+        status("screenshot " + path);
+    } catch (const Error& e) {
+        status(std::string("screenshot failed: ") + e.what());
+        exitStatus_ = 1;
+    }
+}
+
+void Viewer::checkReload() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastReloadCheck_ < std::chrono::milliseconds(500)) return;
+    lastReloadCheck_ = now;
+    std::error_code ec;
+    const auto time = std::filesystem::last_write_time(options_.scenePath, ec);
+    if (ec || time == sceneTime_) return;
+    sceneTime_ = time;
+    try {
+        ref_ptr<Node> fresh = readScene(options_.scenePath);
+        detachAll();
+        root_ = fresh;
+        loadScene();
+        status("reloaded " + options_.scenePath);
+    } catch (const Error& e) {
+        status(std::string("reload failed, keeping the old scene: ") + e.what());
+    }
+}
+
+// ---- the frame ------------------------------------------------------------------------------
+
+glm::dvec2 Viewer::resolvePoint(const ScriptPoint& p) const {
+    switch (p.kind) {
+    case ScriptPoint::Kind::Pixels:
+        return {p.value.x, p.value.y};
+    case ScriptPoint::Kind::Canvas: {
+        const auto it = canvases_.find(p.canvas);
+        if (it == canvases_.end())
+            throw Error("the " + p.canvas + " canvas is not on screen (show its panel first)");
+        const auto [lo, hi] = it->second;
+        return {lo.x + p.value.x * (hi.x - lo.x), hi.y - p.value.y * (hi.y - lo.y)};
+    }
+    case ScriptPoint::Kind::World: {
+        const Camera& c = navigation_->camera();
+        const glm::dvec4 clip =
+            c.projectionMatrix(navigation_->aspect()) * c.viewMatrix() * glm::dvec4(p.value, 1.0);
+        const glm::ivec2 size = window_->size();
+        return {(clip.x / clip.w + 1.0) * 0.5 * size.x, (1.0 - clip.y / clip.w) * 0.5 * size.y};
+    }
+    }
+    return {0.0, 0.0};
+}
+
+void Viewer::runScriptStep() {
+    if (scriptNext_ >= script_.size()) return;
+    if (scriptWait_ > 0) {
+        --scriptWait_;
+        return;
+    }
+    const ScriptStep& s = script_[scriptNext_++];
+    try {
+        using K = ScriptStep::Kind;
+        glm::dvec2 point = mouse_;
+        if (s.hasPoint) point = resolvePoint(s.point);
+        switch (s.kind) {
+        case K::Wait:
+            scriptWait_ = std::max(0, s.frames - 1);
+            break;
+        case K::Move:
+            onMouseMove(point);
+            break;
+        case K::Press:
+        case K::Release:
+            if (s.hasPoint) onMouseMove(point);
+            {
+                PendingEvent e{PendingEvent::Kind::Button, point};
+                e.button = s.button;
+                e.pressed = s.kind == K::Press;
+                e.mods = s.mods;
+                events_.push_back(e);
+            }
+            break;
+        case K::Scroll:
+            if (s.hasPoint) onMouseMove(point);
+            onScroll(s.scroll);
+            break;
+        case K::Key:
+            onKey(keyCodeOf(s.text), s.mods);
+            break;
+        case K::Select: {
+            Node* node = findByName(*root_, s.text);
+            if (!node) throw Error("no node named '" + s.text + "' in the scene");
+            select(node);
+            break;
+        }
+        case K::Panel:
+            if (s.text == "tf")
+                showTf_ = true;
+            else if (s.text == "planeOpacity")
+                showPlane_ = true;
+            else if (s.text == "material")
+                showMaterial_ = true;
+            else if (s.text == "fields")
+                showFields_ = true;
+            else
+                throw Error("unknown panel '" + s.text + "'");
+            options_.panels = true;
+            break;
+        case K::Screenshot:
+        case K::Save:
+        case K::Quit:
+            break; // after this frame is drawn (see frame())
+        }
+    } catch (const Error& e) {
+        status(options_.scriptPath + ":" + std::to_string(s.line) + ": " + e.what());
+        exitStatus_ = 1;
+        quit_ = true;
+    }
+}
+
+void Viewer::renderScene(int width, int height) {
+    RenderOptions o;
+    o.width = width;
+    o.height = height;
+    o.background = options_.background;
+    o.interactive = isInteracting();
+    o.interactivePlaneScale = quality_.scale();
+    o.camera = navigation_->cameraPtr();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (!options_.antialias) {
+        renderer_->renderToBoundFramebuffer(*root_, o);
+        return;
+    }
+    // 2x2 supersampling: the renderer draws into a single-sample float target, so the window's
+    // own multisampling would not help; a double-size image filtered down does.
+    const glm::ivec2 big(2 * width, 2 * height);
+    if (big != supersampleSize_) {
+        supersampleColor_ = Renderbuffer(GL_RGBA8, big.x, big.y);
+        supersampleTarget_ = Framebuffer::create();
+        supersampleTarget_.attach(GL_COLOR_ATTACHMENT0, supersampleColor_);
+        supersampleTarget_.requireComplete("supersampling target");
+        supersampleSize_ = big;
+    }
+    supersampleTarget_.bind(GL_FRAMEBUFFER);
+    o.width = big.x;
+    o.height = big.y;
+    renderer_->renderToBoundFramebuffer(*root_, o);
+    supersampleTarget_.bind(GL_READ_FRAMEBUFFER);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, big.x, big.y, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+}
+
+void Viewer::frame() {
+    const auto start = std::chrono::steady_clock::now();
+    GlfwWindow::pollEvents();
+    const bool scripted = scriptNext_ < script_.size() || scriptWait_ > 0;
+    const ScriptStep* step = scripted && scriptWait_ == 0 ? &script_[scriptNext_] : nullptr;
+    runScriptStep();
+    checkReload();
+
+    // The mouse state of this frame, from the events in order.
+    justPressed_[0] = justPressed_[1] = justPressed_[2] = false;
+    for (const PendingEvent& e : events_) {
+        if (e.kind == PendingEvent::Kind::Move) mouse_ = e.position;
+        if (e.kind == PendingEvent::Kind::Button && e.button >= 0 && e.button < 3) {
+            buttons_[e.button] = e.pressed;
+            if (e.pressed) justPressed_[e.button] = true;
+            mods_ = e.mods;
+        }
+    }
+
+    const glm::ivec2 size = window_->size();
+    navigation_->setViewport(size.x, size.y);
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(float(mouse_.x), float(mouse_.y)); // ours: GLFW's or the script's
+    for (int b = 0; b < 3; ++b)
+        io.MouseDown[b] = buttons_[b] || justPressed_[b];
+    ImGui::NewFrame();
+    handleSceneEvents();
+    events_.clear();
+    if (options_.panels) drawPanels();
+    syncManipulators();
+    navigation_->adjustClipping(sceneBox());
+    ImGui::Render();
+
+    const auto renderStart = std::chrono::steady_clock::now();
+    try {
+        renderScene(size.x, size.y);
+    } catch (const Error& e) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glClearColor(0.3f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (statusText_ != e.what()) status(e.what());
+    }
+    glFinish(); // llvmpipe draws on demand: the render time is measured when it is done
+    lastRenderMs_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - renderStart)
+            .count();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    if (step && step->kind == ScriptStep::Kind::Screenshot) screenshot(step->text, step->sceneOnly);
+    if (step && step->kind == ScriptStep::Kind::Save) saveScene(step->text);
+    if (step && step->kind == ScriptStep::Kind::Quit) quit_ = true;
+    window_->swapBuffers();
+
+    lastFrameMs_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    quality_.frameDone(isInteracting(), lastFrameMs_);
+}
+
+int Viewer::run() {
+    while (!quit_ && !window_->shouldClose())
+        frame();
+    return exitStatus_;
+}
+
+// ---- panels ---------------------------------------------------------------------------------
+
+void Viewer::drawSceneTree(Node& node, int depth) {
+    Node* original = originalOf(&node);
+    std::string label = std::string(node.type().name());
+    if (!original->getName().empty()) label += " " + original->getName();
+    label += "##" + std::to_string(reinterpret_cast<std::uintptr_t>(&node)) + "_" +
+             std::to_string(depth);
+    auto* children = node.children();
+    ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth;
+    if (!children || children->empty())
+        flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
+    if (depth < 2) flags |= ImGuiTreeNodeFlags_DefaultOpen;
+    if (selected_.get() == original) flags |= ImGuiTreeNodeFlags_Selected;
+    const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
+    if (ImGui::IsItemClicked()) select(original);
+    if (open && children && !children->empty()) {
+        if (depth < 32)
+            for (const auto& child : *children)
+                if (child) drawSceneTree(*child, depth + 1);
+        ImGui::TreePop();
+    }
+}
+
+void Viewer::drawPanels() {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float w = io.DisplaySize.x, h = io.DisplaySize.y;
+    // Side columns, narrower in small windows so that the middle still shows the scene.
+    const float left = std::min(330.0f, 0.28f * w), right = std::min(400.0f, 0.34f * w);
+    const float tfHeight = std::min(330.0f, 0.62f * h), planeHeight = std::min(190.0f, 0.38f * h);
+
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(left, h * 0.45f), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Scene");
+    ImGui::Text("%.1f fps  frame %.0f ms  render %.0f ms",
+                lastFrameMs_ > 0 ? 1000.0 / lastFrameMs_ : 0.0, lastFrameMs_, lastRenderMs_);
+    ImGui::Text("%s  planes x%.3g  %s%s", isInteracting() ? "interactive" : "still",
+                quality_.scale(), navigation_->isOrthographic() ? "ortho" : "perspective",
+                options_.antialias ? "  AA 2x2" : "");
+    if (ImGui::Button("view all")) navigation_->viewAll(sceneBox());
+    ImGui::SameLine();
+    if (ImGui::Button("home")) navigation_->goHome();
+    ImGui::SameLine();
+    if (ImGui::Button(navigation_->isOrthographic() ? "perspective" : "ortho"))
+        navigation_->toggleProjection();
+    ImGui::SameLine();
+    ImGui::Checkbox("AA", &options_.antialias);
+    if (ImGui::Button(seekMode_ ? "seek: click a point" : "seek")) seekMode_ = !seekMode_;
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!history_.canUndo());
+    if (ImGui::Button("undo")) history_.undo();
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!history_.canRedo());
+    if (ImGui::Button("redo")) history_.redo();
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("save")) saveScene(options_.scenePath);
+    const bool manipulable =
+        selected_ &&
+        (selected_->isA<ClipPlane>() || selected_->isA<BoxClip>() || selected_->isA<Transform>());
+    ImGui::BeginDisabled(!manipulable);
+    bool attached = false;
+    for (const Attached& a : manipulators_)
+        attached |= a.manipulator->original() == selected_.get();
+    if (ImGui::Button(attached ? "remove manipulator (m)" : "manipulate (m)")) toggleManipulator();
+    ImGui::EndDisabled();
+    if (!statusText_.empty()) ImGui::TextWrapped("%s", statusText_.c_str());
+    ImGui::Separator();
+    drawSceneTree(*root_, 0);
+    ImGui::End();
+
+    if (showFields_) {
+        ImGui::SetNextWindowPos(ImVec2(0, h * 0.45f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(left, h * 0.55f), ImGuiCond_FirstUseEver);
+        ImGui::Begin("Fields", &showFields_);
+        drawFieldPanel(fieldPanel_, fieldPanelState_);
+        ImGui::End();
+    }
+    if (showTf_) {
+        ImGui::SetNextWindowPos(ImVec2(w - right, 0), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(right, tfHeight), ImGuiCond_FirstUseEver);
+        ImGui::Begin("Transfer function", &showTf_);
+        drawTransferFunctionPanel(tfEditor_, tfPanel_);
+        canvases_["tf"] = {glm::vec2(tfPanel_.canvas.rectMin.x, tfPanel_.canvas.rectMin.y),
+                           glm::vec2(tfPanel_.canvas.rectMax.x, tfPanel_.canvas.rectMax.y)};
+        ImGui::End();
+    } else {
+        canvases_.erase("tf");
+    }
+    if (showPlane_) {
+        ImGui::SetNextWindowPos(ImVec2(w - right, tfHeight), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(right, planeHeight), ImGuiCond_FirstUseEver);
+        ImGui::Begin("Plane opacity", &showPlane_);
+        drawPlaneOpacityPanel(planeEditor_, planePanel_);
+        canvases_["planeOpacity"] = {glm::vec2(planePanel_.rectMin.x, planePanel_.rectMin.y),
+                                     glm::vec2(planePanel_.rectMax.x, planePanel_.rectMax.y)};
+        ImGui::End();
+    } else {
+        canvases_.erase("planeOpacity");
+    }
+    if (showMaterial_) {
+        const float top = tfHeight + planeHeight;
+        ImGui::SetNextWindowPos(ImVec2(w - right, top), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(right, std::max(h - top, 120.0f)), ImGuiCond_FirstUseEver);
+        ImGui::Begin("Material", &showMaterial_);
+        drawMaterialPanel(materialEditor_);
+        ImGui::End();
+    }
+}
+
+} // namespace volsg

@@ -1,0 +1,243 @@
+#include "ViewerScript.h"
+
+#include <charconv>
+#include <cstdlib>
+#include <sstream>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <volsg/core/Error.h>
+
+namespace volsg {
+
+namespace {
+
+struct LineReader {
+    std::vector<std::string> words;
+    std::size_t next = 0;
+    const std::string& file;
+    int line;
+
+    [[noreturn]] void fail(const std::string& message) const {
+        throw Error(message, file, line, 1);
+    }
+    bool more() const { return next < words.size(); }
+    std::string word(const char* what) {
+        if (!more()) fail(std::string("expected ") + what);
+        return words[next++];
+    }
+    double number(const char* what) {
+        const std::string w = word(what);
+        char* end = nullptr;
+        const double v = std::strtod(w.c_str(), &end);
+        if (w.empty() || *end != '\0') fail(std::string("expected ") + what + ", got '" + w + "'");
+        return v;
+    }
+    int count(const char* what) {
+        const double v = number(what);
+        if (v < 0 || v > 1e6 || v != double(int(v))) fail(std::string(what) + " must be a count");
+        return int(v);
+    }
+    bool nextIsNumber() const {
+        if (!more()) return false;
+        char* end = nullptr;
+        std::strtod(words[next].c_str(), &end);
+        return !words[next].empty() && *end == '\0';
+    }
+    bool nextIsPoint() const {
+        if (!more()) return false;
+        if (nextIsNumber()) return true;
+        const std::string& w = words[next];
+        return w.find(':') != std::string::npos;
+    }
+    std::vector<double> triple(const std::string& text, std::size_t n) {
+        std::vector<double> out;
+        std::stringstream in(text);
+        std::string part;
+        while (std::getline(in, part, ',')) {
+            char* end = nullptr;
+            const double v = std::strtod(part.c_str(), &end);
+            if (part.empty() || *end != '\0') fail("bad number '" + part + "' in '" + text + "'");
+            out.push_back(v);
+        }
+        if (out.size() != n) fail("'" + text + "' needs " + std::to_string(n) + " numbers");
+        return out;
+    }
+    ScriptPoint point() {
+        ScriptPoint p;
+        if (nextIsNumber()) {
+            p.value.x = number("x");
+            p.value.y = number("y");
+            return p;
+        }
+        const std::string w = word("a point");
+        const auto colon = w.find(':');
+        if (colon == std::string::npos) fail("expected a point, got '" + w + "'");
+        const std::string place = w.substr(0, colon), rest = w.substr(colon + 1);
+        if (place == "world") {
+            const auto v = triple(rest, 3);
+            p.kind = ScriptPoint::Kind::World;
+            p.value = {v[0], v[1], v[2]};
+        } else if (place == "tf" || place == "planeOpacity") {
+            const auto v = triple(rest, 2);
+            p.kind = ScriptPoint::Kind::Canvas;
+            p.canvas = place;
+            p.value = {v[0], v[1], 0.0};
+        } else {
+            fail("unknown place '" + place + "' (world, tf, planeOpacity)");
+        }
+        return p;
+    }
+    int button() {
+        const std::string w = word("a button");
+        if (w == "left") return GLFW_MOUSE_BUTTON_LEFT;
+        if (w == "right") return GLFW_MOUSE_BUTTON_RIGHT;
+        if (w == "middle") return GLFW_MOUSE_BUTTON_MIDDLE;
+        fail("unknown button '" + w + "' (left, middle, right)");
+    }
+    int mods() {
+        int m = 0;
+        while (more()) {
+            const std::string w = word("a modifier");
+            if (w == "shift")
+                m |= GLFW_MOD_SHIFT;
+            else if (w == "ctrl")
+                m |= GLFW_MOD_CONTROL;
+            else if (w == "alt")
+                m |= GLFW_MOD_ALT;
+            else
+                fail("unexpected '" + w + "' (modifiers: shift ctrl alt)");
+        }
+        return m;
+    }
+    void end() {
+        if (more()) fail("unexpected '" + words[next] + "'");
+    }
+};
+
+} // namespace
+
+int keyCodeOf(const std::string& name) {
+    if (name.size() == 1 && name[0] >= 'a' && name[0] <= 'z') return GLFW_KEY_A + (name[0] - 'a');
+    if (name.size() == 1 && name[0] >= '0' && name[0] <= '9') return GLFW_KEY_0 + (name[0] - '0');
+    if (name == "escape") return GLFW_KEY_ESCAPE;
+    if (name == "enter") return GLFW_KEY_ENTER;
+    if (name == "space") return GLFW_KEY_SPACE;
+    if (name == "tab") return GLFW_KEY_TAB;
+    if (name == "delete") return GLFW_KEY_DELETE;
+    if (name.size() >= 2 && name[0] == 'f') {
+        int n = 0;
+        auto [end, ec] = std::from_chars(name.data() + 1, name.data() + name.size(), n);
+        if (ec == std::errc() && end == name.data() + name.size() && n >= 1 && n <= 12)
+            return GLFW_KEY_F1 + n - 1;
+    }
+    return -1;
+}
+
+std::vector<ScriptStep> parseViewerScript(const std::string& text, const std::string& fileName) {
+    std::vector<ScriptStep> steps;
+    std::stringstream in(text);
+    std::string lineText;
+    int lineNumber = 0;
+    while (std::getline(in, lineText)) {
+        ++lineNumber;
+        if (const auto hash = lineText.find('#'); hash != std::string::npos) lineText.resize(hash);
+        LineReader r{{}, 0, fileName, lineNumber};
+        std::stringstream words(lineText);
+        for (std::string w; words >> w;)
+            r.words.push_back(w);
+        if (r.words.empty()) continue;
+        const std::string command = r.word("a command");
+        ScriptStep s;
+        s.line = lineNumber;
+        using K = ScriptStep::Kind;
+        if (command == "wait") {
+            s.kind = K::Wait;
+            s.frames = r.count("a frame count");
+            r.end();
+            steps.push_back(s);
+        } else if (command == "move") {
+            s.kind = K::Move;
+            s.hasPoint = true;
+            s.point = r.point();
+            r.end();
+            steps.push_back(s);
+        } else if (command == "press" || command == "release") {
+            s.kind = command == "press" ? K::Press : K::Release;
+            s.button = r.button();
+            if (r.nextIsPoint()) {
+                s.hasPoint = true;
+                s.point = r.point();
+            }
+            s.mods = r.mods();
+            steps.push_back(s);
+        } else if (command == "click") {
+            const int button = r.button();
+            const ScriptPoint p = r.point();
+            const int mods = r.mods();
+            steps.push_back({K::Move, 0, 0, true, p, 0.0, "", false, mods, lineNumber});
+            steps.push_back({K::Press, 0, button, false, p, 0.0, "", false, mods, lineNumber});
+            steps.push_back({K::Release, 0, button, false, p, 0.0, "", false, mods, lineNumber});
+        } else if (command == "drag") {
+            const int button = r.button();
+            const ScriptPoint from = r.point(), to = r.point();
+            int moves = 8;
+            if (r.nextIsNumber()) moves = std::max(1, r.count("a step count"));
+            const int mods = r.mods();
+            if (from.kind != to.kind || from.canvas != to.canvas)
+                r.fail("a drag's two points must be of the same kind");
+            steps.push_back({K::Move, 0, 0, true, from, 0.0, "", false, mods, lineNumber});
+            steps.push_back({K::Press, 0, button, false, from, 0.0, "", false, mods, lineNumber});
+            for (int i = 1; i <= moves; ++i) {
+                ScriptPoint p = from;
+                p.value = from.value + (to.value - from.value) * (double(i) / double(moves));
+                steps.push_back({K::Move, 0, 0, true, p, 0.0, "", false, mods, lineNumber});
+            }
+            steps.push_back({K::Release, 0, button, false, to, 0.0, "", false, mods, lineNumber});
+        } else if (command == "scroll") {
+            s.kind = K::Scroll;
+            s.scroll = r.number("a scroll amount");
+            if (r.nextIsPoint()) {
+                s.hasPoint = true;
+                s.point = r.point();
+            }
+            r.end();
+            steps.push_back(s);
+        } else if (command == "key") {
+            s.kind = K::Key;
+            s.text = r.word("a key name");
+            if (keyCodeOf(s.text) < 0) r.fail("unknown key '" + s.text + "'");
+            s.mods = r.mods();
+            steps.push_back(s);
+        } else if (command == "select" || command == "panel") {
+            s.kind = command == "select" ? K::Select : K::Panel;
+            s.text = r.word("a name");
+            r.end();
+            steps.push_back(s);
+        } else if (command == "screenshot") {
+            s.kind = K::Screenshot;
+            s.text = r.word("a PNG file name");
+            if (r.more()) {
+                if (r.word("scene") != "scene") r.fail("screenshot takes a file and 'scene'");
+                s.sceneOnly = true;
+            }
+            r.end();
+            steps.push_back(s);
+        } else if (command == "save") {
+            s.kind = K::Save;
+            s.text = r.word("a scene file name");
+            r.end();
+            steps.push_back(s);
+        } else if (command == "quit") {
+            s.kind = K::Quit;
+            r.end();
+            steps.push_back(s);
+        } else {
+            r.fail("unknown command '" + command + "'");
+        }
+    }
+    return steps;
+}
+
+} // namespace volsg

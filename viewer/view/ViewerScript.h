@@ -1,0 +1,73 @@
+#pragma once
+// The input script of `volsg-view --script FILE`: mouse drags, key presses, waits, selections,
+// screenshots and saves, played one step per frame, as a user would (each press, move and
+// release is its own frame, so the UI sees them as separate events).
+//
+//   # comment
+//   wait N                          N frames
+//   move X Y                        the mouse to a point
+//   press BUTTON [X Y] [MODS]       BUTTON: left middle right; MODS: shift ctrl alt
+//   release BUTTON [X Y] [MODS]
+//   click BUTTON X Y [MODS]         move, press, release
+//   drag BUTTON X0 Y0 X1 Y1 [N] [MODS]  move, press, N moves (default 8), release
+//   scroll DY [X Y]
+//   key NAME [MODS]                 a-z 0-9 escape enter space tab delete f1-f12
+//   select NAME                     the node DEF'd NAME, as a click in the scene tree
+//   panel NAME                      show the named panel (tf, planeOpacity, material, fields)
+//   screenshot FILE [scene]         the window with its panels; `scene`: the scene alone
+//   save FILE                       the edited scene (SCENE-FORMAT)
+//   quit
+//
+// A point X Y is window pixels (origin top-left), or one word naming a place that is resolved
+// when the step runs: `tf:U,V` / `planeOpacity:U,V` (U, V in [0, 1] across a panel's curve
+// canvas, V up) or `world:X,Y,Z` (where a world point shows in the view).
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace volsg {
+
+/// A point as the script gives it: pixels, or a named place resolved at run time.
+struct ScriptPoint {
+    enum class Kind { Pixels, Canvas, World };
+    Kind kind = Kind::Pixels;
+    std::string canvas;    ///< for Canvas
+    glm::dvec3 value{0.0}; ///< pixels (x, y), canvas (u, v) or a world point
+};
+
+struct ScriptStep {
+    enum class Kind {
+        Wait,
+        Move,
+        Press,
+        Release,
+        Scroll,
+        Key,
+        Select,
+        Panel,
+        Screenshot,
+        Save,
+        Quit
+    };
+    Kind kind = Kind::Wait;
+    int frames = 0; ///< Wait
+    int button = 0; ///< Press, Release: 0 left, 1 right, 2 middle (GLFW's numbers)
+    bool hasPoint = false;
+    ScriptPoint point;
+    double scroll = 0.0;
+    std::string text;       ///< key name, node name, panel name or file
+    bool sceneOnly = false; ///< Screenshot
+    int mods = 0;           ///< GLFW modifier bits
+    int line = 0;           ///< in the script file, for messages
+};
+
+/// Reads a script (drag and click are expanded into their steps). Throws Error with the file,
+/// line and column of anything it does not understand.
+std::vector<ScriptStep> parseViewerScript(const std::string& text, const std::string& fileName);
+
+/// A key name of the script as a GLFW key code; -1 for an unknown name.
+int keyCodeOf(const std::string& name);
+
+} // namespace volsg
