@@ -213,6 +213,33 @@ TEST_CASE("interactive and still frames are both near the reference") {
     CHECK(moving.difference.max < 4.0 * k8Bit);
 }
 
+TEST_CASE("the viewer's interactive plane scale lowers the interactive plane count only") {
+    OSMesaContext context;
+    Renderer renderer;
+    RayCastVolume v;
+    v.data = makeSoftSphere(24, VoxelType::UByte);
+    v.transferFunctions[-1] = transferFunction({{0, 0}, {1, 0.7}}, {{0, 1}, {1, 0.4}});
+    auto camera = framing(*v.data, {1.0f, 0.2f, 0.6f});
+    auto root = Separator::create();
+    auto node = GridVolume::create();
+    node->description = v;
+    node->settings.interactivePlanes = 40;
+    root->addChild(node);
+    RenderOptions options;
+    options.width = options.height = 32;
+    options.camera = camera;
+    options.interactivePlaneScale = 0.25;
+    renderer.render(*root, options);
+    const int still = node->stats.planes;
+    options.interactive = true;
+    renderer.render(*root, options);
+    CHECK(node->stats.planes == 10); // 40 interactive planes x 0.25
+    options.interactivePlaneScale = 1.0;
+    renderer.render(*root, options);
+    CHECK(node->stats.planes == 40);
+    CHECK(still > 40); // the still frame ignores the scale
+}
+
 TEST_CASE("16-bit data over its full range matches the reference") {
     OSMesaContext context;
     Renderer renderer;

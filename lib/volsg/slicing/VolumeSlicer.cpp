@@ -671,9 +671,12 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
                                         : long(std::ceil(depthExtent / autoSpacing));
     still = std::clamp(still, 1L, long(kMaxPlanes));
     long planes = still;
-    if (action.isInteractive())
+    if (action.isInteractive()) {
         planes = settings.interactivePlanes > 0 ? long(settings.interactivePlanes)
                                                 : std::max(1L, (still + 3) / 4);
+        // The viewer lowers this further when interactive frames are too slow.
+        planes = long(std::ceil(double(planes) * action.interactivePlaneScale()));
+    }
     planes = std::clamp(planes, 1L, long(kMaxPlanes));
     const PlaneLayout layout =
         PlaneLayout::over(boxDepth, std::max(depthExtent, 1e-12) / double(planes) * (1.0 + 1e-9));
