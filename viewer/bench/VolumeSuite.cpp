@@ -121,6 +121,41 @@ std::string seriesOf(const SlicingSetting& s) {
            (s.preIntegrated ? " pre-integrated" : "");
 }
 
+/// Times one render per orbit view (after `betweenFrames`, untimed) and keeps the images of
+/// the views listed in views.errorIndices.
+template <class BetweenFrames>
+Samples timeOrbit(Renderer& renderer, Node& root, RenderOptions options, const OrbitViews& views,
+                  std::vector<Image>& images, BetweenFrames&& betweenFrames) {
+    Samples samples;
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < views.cameras.size(); ++i) {
+        options.camera = views.cameras[i];
+        Image image;
+        samples.ms.push_back(timeMs([&] { image = renderer.render(root, options); }));
+        betweenFrames();
+        if (next < views.errorIndices.size() && views.errorIndices[next] == int(i)) {
+            images.push_back(std::move(image));
+            ++next;
+        }
+    }
+    return samples;
+}
+
+/// Fills the row's time and its error against the reference images of the same views.
+void setTimeAndError(BenchRow& row, const Samples& samples, const std::vector<Image>& images,
+                     const ReferenceImages& reference) {
+    row.ms = samples.median();
+    row.frames = int(samples.ms.size());
+    ImageError error;
+    for (std::size_t i = 0; i < images.size(); ++i)
+        error.add(images[i], reference.images[i]);
+    row.hasError = !images.empty();
+    row.rmse = error.rmse();
+    row.psnr = error.psnr();
+    row.maxAbs = error.maxAbs();
+    row.errorFrames = int(images.size());
+}
+
 /// Times the rotating views with one setting of the Volume node and measures the error views.
 BenchRow measureSlicing(Node& root, Volume& volume, const SuiteScene& scene,
                         const SlicingSetting& setting, const VolumeSuiteSettings& st,
@@ -148,27 +183,8 @@ BenchRow measureSlicing(Node& root, Volume& volume, const SuiteScene& scene,
         Renderer renderer;
         options.camera = views.cameras[0];
         renderer.render(root, options); // warm-up: uploads and shader builds are not frames
-        Samples samples;
-        std::size_t next = 0;
-        for (std::size_t i = 0; i < views.cameras.size(); ++i) {
-            options.camera = views.cameras[i];
-            Image image;
-            samples.ms.push_back(timeMs([&] { image = renderer.render(root, options); }));
-            if (next < views.errorIndices.size() && views.errorIndices[next] == int(i)) {
-                images.push_back(std::move(image));
-                ++next;
-            }
-        }
-        row.ms = samples.median();
-        row.frames = int(samples.ms.size());
-        ImageError error;
-        for (std::size_t i = 0; i < images.size(); ++i)
-            error.add(images[i], reference.images[i]);
-        row.hasError = !images.empty();
-        row.rmse = error.rmse();
-        row.psnr = error.psnr();
-        row.maxAbs = error.maxAbs();
-        row.errorFrames = int(images.size());
+        const Samples samples = timeOrbit(renderer, root, options, views, images, [] {});
+        setTimeAndError(row, samples, images, reference);
         if (volume.slicingStats().textureBytes > 0) {
             row.memoryBytes = volume.slicingStats().textureBytes;
             row.memoryKind = "texture";
@@ -211,29 +227,11 @@ BenchRow measureShearWarp(Node& root, ShearWarpVolume& volume, const SuiteScene&
             renderer.render(root, options);
             if (optimized) volume.waitForOptimizer();
         }
-        Samples samples;
         std::vector<Image> images;
-        std::size_t next = 0;
-        for (std::size_t i = 0; i < views.cameras.size(); ++i) {
-            options.camera = views.cameras[i];
-            Image image;
-            samples.ms.push_back(timeMs([&] { image = renderer.render(root, options); }));
+        const Samples samples = timeOrbit(renderer, root, options, views, images, [&] {
             if (optimized) volume.waitForOptimizer(); // idle time between frames, not timed
-            if (next < views.errorIndices.size() && views.errorIndices[next] == int(i)) {
-                images.push_back(std::move(image));
-                ++next;
-            }
-        }
-        row.ms = samples.median();
-        row.frames = int(samples.ms.size());
-        ImageError error;
-        for (std::size_t i = 0; i < images.size(); ++i)
-            error.add(images[i], reference.images[i]);
-        row.hasError = !images.empty();
-        row.rmse = error.rmse();
-        row.psnr = error.psnr();
-        row.maxAbs = error.maxAbs();
-        row.errorFrames = int(images.size());
+        });
+        setTimeAndError(row, samples, images, reference);
         row.memoryBytes = volume.voxelListBytes();
         row.memoryKind = "voxel lists";
     } catch (const Error& e) {

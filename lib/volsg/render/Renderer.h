@@ -23,8 +23,8 @@ struct RenderOptions {
     /// While interactive, volumes multiply their interactive plane count by this (in (0, 1]):
     /// the viewer lowers it when interactive frames are still too slow.
     double interactivePlaneScale = 1.0;
-    ref_ptr<Camera> camera;   ///< overrides the scene's camera when set (model matrix = identity)
-    bool opaqueOnly = false;  ///< only the Opaque pass: no volumes, no transparent shapes
+    ref_ptr<Camera> camera;  ///< overrides the scene's camera when set (model matrix = identity)
+    bool opaqueOnly = false; ///< only the Opaque pass: no volumes, no transparent shapes
 };
 
 /// What a Renderer has done, for tests and the benchmark: a frame where nothing changed
