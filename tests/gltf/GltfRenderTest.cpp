@@ -465,9 +465,11 @@ TEST_CASE("single-sided primitives cull their back faces and double-sided ones d
     }
 }
 
-TEST_CASE("an opaque mesh inside a Volume matches renderReference per pixel") {
-    Offscreen o;
-    // A lit cube from a glTF file inside a soft sphere; perspective, so depth matters per pixel.
+namespace {
+
+/// A glTF file holding a lit gold cube 0.5 wide at the origin, tilted (the pose of the Inventor
+/// cube the mixing tests use as their control: rotation 0.5547 0.83205 0 0.7378).
+std::string writeTiltedCube(const std::string& name) {
     GltfBuilder b;
     const std::vector<glm::vec3> corners{{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                          {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
@@ -475,14 +477,22 @@ TEST_CASE("an opaque mesh inside a Volume matches renderReference per pixel") {
                                            2, 3, 7, 2, 7, 6, 1, 2, 6, 1, 6, 5, 0, 4, 7, 0, 7, 3};
     const int pos = b.addPositions(corners);
     const int idx = b.addAccessor(faces, kUShort, "SCALAR", faces.size());
-    const std::string path =
-        b.writeGltf("inside.gltf",
-                    "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.9,0.7,0.2,1],"
-                    "\"metallicFactor\":0,\"roughnessFactor\":0.6}}],"
-                    "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" +
-                        std::to_string(pos) + "},\"indices\":" + std::to_string(idx) +
-                        ",\"material\":0}]}],\"nodes\":[{\"mesh\":0,\"scale\":[0.25,0.25,0.25],"
-                        "\"rotation\":[0.2,0.3,0,0.932738]}],\"scenes\":[{\"nodes\":[0]}]");
+    const std::string path = b.writeGltf(
+        name, "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.9,0.7,0.2,1],"
+              "\"metallicFactor\":0,\"roughnessFactor\":0.6}}],"
+              "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" +
+                  std::to_string(pos) + "},\"indices\":" + std::to_string(idx) +
+                  ",\"material\":0}]}],\"nodes\":[{\"mesh\":0,\"scale\":[0.25,0.25,0.25],"
+                  "\"rotation\":[0.2,0.3,0,0.932738]}],\"scenes\":[{\"nodes\":[0]}]");
+    return path;
+}
+
+} // namespace
+
+TEST_CASE("an opaque mesh inside a Volume matches renderReference per pixel") {
+    Offscreen o;
+    // A lit cube from a glTF file inside a soft sphere; perspective, so depth matters per pixel.
+    const std::string path = writeTiltedCube("inside.gltf");
     // The same scene with an Inventor Cube of the same size and pose in place of the model is
     // the control: the slicer's own error against the reference, which the glTF mesh must not
     // make worse.
@@ -555,21 +565,7 @@ TEST_CASE("an opaque mesh inside a ShearWarpVolume matches renderReference per p
     Offscreen o;
     // A glTF cube 0.5 wide at the centre of a homogeneous 32^3 box [-1, 1]^3 (A = 0.1 per L0 =
     // 1/16), seen along an oblique orthographic view (shear-warp renders parallel views only).
-    GltfBuilder b;
-    const std::vector<glm::vec3> corners{{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                                         {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-    const std::vector<std::uint16_t> faces{0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                                           2, 3, 7, 2, 7, 6, 1, 2, 6, 1, 6, 5, 0, 4, 7, 0, 7, 3};
-    const int pos = b.addPositions(corners);
-    const int idx = b.addAccessor(faces, kUShort, "SCALAR", faces.size());
-    const std::string path =
-        b.writeGltf("inside-shearwarp.gltf",
-                    "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.9,0.7,0.2,1],"
-                    "\"metallicFactor\":0,\"roughnessFactor\":0.6}}],"
-                    "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" +
-                        std::to_string(pos) + "},\"indices\":" + std::to_string(idx) +
-                        ",\"material\":0}]}],\"nodes\":[{\"mesh\":0,\"scale\":[0.25,0.25,0.25],"
-                        "\"rotation\":[0.2,0.3,0,0.932738]}],\"scenes\":[{\"nodes\":[0]}]");
+    const std::string path = writeTiltedCube("inside-shearwarp.gltf");
     auto sceneWith = [](const std::string& mesh) {
         return readSceneFromString(
             "#Inventor V2.1 ascii\nSeparator {\n"
