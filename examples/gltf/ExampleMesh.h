@@ -17,6 +17,30 @@ namespace volsg::example {
 /// The bytes of the .glb: one mesh (one primitive: POSITION, NORMAL, u16 indices), one orange
 /// dielectric metallic-roughness material, one node. Coordinates are rounded to multiples of 2^-16
 /// so that the last bit of a sin or cos cannot change the file.
+/// A .glb container (glTF 2.0 binary): the JSON chunk padded with spaces and the BIN chunk
+/// padded with zeros to 4 bytes, as the format requires.
+inline std::vector<std::uint8_t> packGlb(std::string json, std::vector<std::uint8_t> bin) {
+    while (json.size() % 4)
+        json += ' ';
+    while (bin.size() % 4)
+        bin.push_back(0);
+    std::vector<std::uint8_t> out;
+    auto u32 = [&](std::uint32_t v) {
+        for (int i = 0; i < 4; ++i)
+            out.push_back(std::uint8_t(v >> (8 * i)));
+    };
+    out.insert(out.end(), {'g', 'l', 'T', 'F'});
+    u32(2);
+    u32(std::uint32_t(12 + 8 + json.size() + 8 + bin.size()));
+    u32(std::uint32_t(json.size()));
+    out.insert(out.end(), {'J', 'S', 'O', 'N'});
+    out.insert(out.end(), json.begin(), json.end());
+    u32(std::uint32_t(bin.size()));
+    out.insert(out.end(), {'B', 'I', 'N', 0});
+    out.insert(out.end(), bin.begin(), bin.end());
+    return out;
+}
+
 inline std::vector<std::uint8_t> torusKnotGlb() {
     constexpr int kAround = 256, kSides = 16;
     constexpr double kScale = 0.11, kTube = 0.045;
@@ -116,24 +140,7 @@ inline std::vector<std::uint8_t> torusKnotGlb() {
         "]},{\"bufferView\":1,\"componentType\":5126,\"count\":" + std::to_string(vertices) +
         ",\"type\":\"VEC3\"},{\"bufferView\":2,\"componentType\":5123,\"count\":" +
         std::to_string(indices.size()) + ",\"type\":\"SCALAR\"}]}";
-    while (json.size() % 4)
-        json += ' ';
-
-    std::vector<std::uint8_t> out;
-    auto u32 = [&](std::uint32_t v) {
-        for (int i = 0; i < 4; ++i)
-            out.push_back(std::uint8_t(v >> (8 * i)));
-    };
-    out.insert(out.end(), {'g', 'l', 'T', 'F'});
-    u32(2);
-    u32(std::uint32_t(12 + 8 + json.size() + 8 + bin.size()));
-    u32(std::uint32_t(json.size()));
-    out.insert(out.end(), {'J', 'S', 'O', 'N'});
-    out.insert(out.end(), json.begin(), json.end());
-    u32(std::uint32_t(bin.size()));
-    out.insert(out.end(), {'B', 'I', 'N', 0});
-    out.insert(out.end(), bin.begin(), bin.end());
-    return out;
+    return packGlb(std::move(json), std::move(bin));
 }
 
 } // namespace volsg::example

@@ -14,6 +14,8 @@
 
 #include <glm/glm.hpp>
 
+#include "../../examples/gltf/ExampleMesh.h" // packGlb
+
 namespace volsg::test {
 
 /// A folder of this process for scratch files (ctest runs cases in parallel).
@@ -132,28 +134,8 @@ public:
     }
     /// Writes `name` as .glb (JSON and BIN chunks); returns the path.
     std::string writeGlb(const std::string& name, const std::string& rest) const {
-        std::string j = json(rest, "", true);
-        while (j.size() % 4)
-            j += ' ';
-        std::vector<std::uint8_t> b = bin_;
-        while (b.size() % 4)
-            b.push_back(0);
-        std::vector<std::uint8_t> out;
-        auto u32 = [&](std::uint32_t v) {
-            for (int i = 0; i < 4; ++i)
-                out.push_back(std::uint8_t(v >> (8 * i)));
-        };
-        out.insert(out.end(), {'g', 'l', 'T', 'F'});
-        u32(2);
-        u32(std::uint32_t(12 + 8 + j.size() + 8 + b.size()));
-        u32(std::uint32_t(j.size()));
-        out.insert(out.end(), {'J', 'S', 'O', 'N'});
-        out.insert(out.end(), j.begin(), j.end());
-        u32(std::uint32_t(b.size()));
-        out.insert(out.end(), {'B', 'I', 'N', 0});
-        out.insert(out.end(), b.begin(), b.end());
         const auto path = gltfScratch() / name;
-        writeBytes(path, out);
+        writeBytes(path, example::packGlb(json(rest, "", true), bin_));
         return path.string();
     }
 
