@@ -7,6 +7,7 @@
 
 #include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/core/Error.h>
+#include <volsg/core/KeyMixing.h>
 #include <volsg/gl/Program.h>
 #include <volsg/gl/Shader.h>
 #include <volsg/gl/Texture.h>
@@ -27,16 +28,6 @@ namespace volsg {
 const EnumValues ShearWarpVolume::interObjectNames{{"DVR", DVR}, {"MIP", MIP}};
 
 namespace {
-
-std::uint64_t mix(std::uint64_t key, std::uint64_t value) {
-    return (key ^ value) * 0x100000001b3ULL;
-}
-
-std::uint64_t bitsOf(double v) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &v, sizeof bits);
-    return bits;
-}
 
 VoxelRenderMode modeOf(int mode) {
     switch (mode) {
@@ -167,7 +158,7 @@ std::vector<ShearWarpObject> ShearWarpVolume::gatherObjects(const State& state,
         const glm::dvec4 h = glm::transpose(model) * glm::dvec4(glm::dvec3(p), -p.w);
         localPlanes.push_back(glm::dvec4(glm::dvec3(h), -h.w));
         for (int i = 0; i < 4; ++i)
-            planeKey = mix(planeKey, bitsOf(p[i]));
+            planeKey = mixKey(planeKey, bitsOf(p[i]));
     }
 
     for (const ObjectScope& scope : scopesOf(*this, state)) {
@@ -176,9 +167,9 @@ std::vector<ShearWarpObject> ShearWarpVolume::gatherObjects(const State& state,
         std::uint64_t transferKey = 0x9e3779b97f4a7c15ULL;
         if (scope.transfer) {
             o.transferFunction = scope.transfer->function();
-            transferKey =
-                mix(transferKey, std::uint64_t(reinterpret_cast<std::uintptr_t>(scope.transfer)));
-            transferKey = mix(transferKey, scope.transfer->version());
+            transferKey = mixKey(transferKey,
+                                 std::uint64_t(reinterpret_cast<std::uintptr_t>(scope.transfer)));
+            transferKey = mixKey(transferKey, scope.transfer->version());
         }
         o.object = vo.voxelObject(*grid, tags.get(), o.transferFunction, transferKey);
         o.compositing = vo.compositing() == VolumeObject::MIP           ? ObjectCompositing::MIP
@@ -198,18 +189,18 @@ std::vector<ShearWarpObject> ShearWarpVolume::gatherObjects(const State& state,
             box.extent = glm::dvec3(scope.box.node->extent());
             o.box = box;
             clipKey =
-                mix(clipKey == 0 ? 0xcbf29ce484222325ULL : clipKey, scope.box.node->version());
+                mixKey(clipKey == 0 ? 0xcbf29ce484222325ULL : clipKey, scope.box.node->version());
             for (int c = 0; c < 4; ++c)
                 for (int r = 0; r < 4; ++r)
-                    clipKey = mix(clipKey, bitsOf(box.localToBox[c][r]));
+                    clipKey = mixKey(clipKey, bitsOf(box.localToBox[c][r]));
         }
         // Also re-split when the model matrix moves the volume against world clip planes.
         if (clipKey != 0)
             for (int c = 0; c < 4; ++c)
                 for (int r = 0; r < 4; ++r)
-                    clipKey = mix(clipKey, bitsOf(worldToLocal[c][r]));
+                    clipKey = mixKey(clipKey, bitsOf(worldToLocal[c][r]));
         o.clipKey = clipKey;
-        o.tableKey = mix(mix(vo.version(), transferKey), 1);
+        o.tableKey = mixKey(mixKey(vo.version(), transferKey), 1);
         out.push_back(std::move(o));
         if (sources) sources->push_back(&vo);
     }
@@ -376,15 +367,8 @@ void ShearWarpVolume::waitForOptimizer() {
 }
 
 void ShearWarpVolume::getBoundingBox(BoundingBoxAction& action) {
-    const VolumeData* data = action.state().nearestNode<VolumeData>();
-    if (!data) return;
-    const ref_ptr<const VolumeGrid> grid = data->grid();
-    if (!grid) return;
-    const glm::dvec3 half = 0.5 * grid->extent();
-    Box3 box;
-    box.extendBy(-half);
-    box.extendBy(half);
-    action.extendByLocal(box);
+    if (const VolumeData* data = action.state().nearestNode<VolumeData>())
+        data->extendBoundingBox(action);
 }
 
 } // namespace volsg

@@ -6,6 +6,7 @@
 #include <map>
 
 #include <volsg/actions/BoundingBoxAction.h>
+#include <volsg/core/KeyMixing.h>
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Material.h>
 #include <volsg/nodes/TransferFunction.h>
@@ -33,15 +34,6 @@ VolumeRenderMode Volume::mode() const {
     }
 }
 
-namespace {
-
-/// FNV-1a style mixing of a value into a running key.
-std::uint64_t mix(std::uint64_t key, std::uint64_t value) {
-    return (key ^ value) * 0x100000001b3ULL;
-}
-
-} // namespace
-
 void Volume::render(RenderAction& action) {
     if (action.pass() != RenderPass::Volume) return;
     // The node's share of the per-frame CPU time: gathering its state (added to the slicer's).
@@ -68,9 +60,9 @@ void Volume::render(RenderAction& action) {
     std::uint64_t transferKey = 0xcbf29ce484222325ULL;
     for (const auto& [tag, tf] : byTag) {
         volume.transferFunctions.emplace(tag, tf->function());
-        transferKey = mix(transferKey, std::uint64_t(std::int64_t(tag)));
-        transferKey = mix(transferKey, std::uint64_t(reinterpret_cast<std::uintptr_t>(tf)));
-        transferKey = mix(transferKey, tf->version());
+        transferKey = mixKey(transferKey, std::uint64_t(std::int64_t(tag)));
+        transferKey = mixKey(transferKey, std::uint64_t(reinterpret_cast<std::uintptr_t>(tf)));
+        transferKey = mixKey(transferKey, tf->version());
     }
 
     for (const glm::vec2& p : planeOpacity.getValues())
@@ -110,15 +102,8 @@ void Volume::render(RenderAction& action) {
 }
 
 void Volume::getBoundingBox(BoundingBoxAction& action) {
-    const VolumeData* data = action.state().nearestNode<VolumeData>();
-    if (!data) return;
-    const ref_ptr<const VolumeGrid> grid = data->grid();
-    if (!grid) return;
-    const glm::dvec3 half = 0.5 * grid->extent();
-    Box3 box;
-    box.extendBy(-half);
-    box.extendBy(half);
-    action.extendByLocal(box);
+    if (const VolumeData* data = action.state().nearestNode<VolumeData>())
+        data->extendBoundingBox(action);
 }
 
 } // namespace volsg

@@ -4,6 +4,7 @@
 #include <string>
 
 #include <volsg/actions/Action.h>
+#include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/ReadContext.h>
 #include <volsg/volume/AttractorBasin.h>
@@ -118,6 +119,16 @@ void VolumeData::readDone(const ReadContext& context) {
 
 void VolumeData::doAction(Action& action) {
     action.state().add(*this);
+}
+
+void VolumeData::extendBoundingBox(BoundingBoxAction& action) const {
+    const ref_ptr<const VolumeGrid> data = grid();
+    if (!data) return;
+    const glm::dvec3 half = 0.5 * data->extent();
+    Box3 box;
+    box.extendBy(-half);
+    box.extendBy(half);
+    action.extendByLocal(box);
 }
 
 ref_ptr<const VolumeGrid> VolumeData::grid() const {

@@ -9,6 +9,8 @@
 
 namespace volsg {
 
+class BoundingBoxAction;
+
 class VolumeData : public Inherit<Node, VolumeData> {
 public:
     static constexpr const char* typeName = "VolumeData";
@@ -49,6 +51,9 @@ public:
     /// resolve against the folder of the scene file, see readDone). Throws Error naming the
     /// file and the problem. Not thread-safe: call from one thread at a time.
     ref_ptr<const VolumeGrid> grid() const;
+    /// Extends the action's box by the volume box (centred on the local origin, dimensions *
+    /// spacing); loads the data as grid() does.
+    void extendBoundingBox(BoundingBoxAction& action) const;
     /// The label volume, or null without tagFileName (or a generator without labels).
     ref_ptr<const VolumeGrid> tagGrid() const;
 

@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include <volsg/core/KeyMixing.h>
 #include <volsg/volume/VolumeGrid.h>
 
 namespace volsg {
@@ -19,16 +20,6 @@ const EnumValues VolumeObject::compositingNames{
     {"DVR", DVR}, {"MIP", MIP}, {"SURFACE", SURFACE_HIT}};
 
 namespace {
-
-std::uint64_t mix(std::uint64_t key, std::uint64_t value) {
-    return (key ^ value) * 0x100000001b3ULL;
-}
-
-std::uint64_t bitsOf(double v) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &v, sizeof bits);
-    return bits;
-}
 
 constexpr std::size_t kCachedGrids = 8;
 
@@ -63,19 +54,19 @@ ref_ptr<VoxelObject> VolumeObject::voxelObject(const VolumeGrid& grid, const Vol
                                                std::uint64_t transferKey) {
     // Only the fields that decide which voxels are taken (not the looks) key the extraction.
     std::uint64_t key = 0xcbf29ce484222325ULL;
-    key = mix(key, std::uint64_t(source()));
-    key = mix(key, std::uint64_t(std::int64_t(tag())));
-    key = mix(key, bitsOf(threshold().x));
-    key = mix(key, bitsOf(threshold().y));
-    key = mix(key, std::uint64_t(voxels()));
-    key = mix(key, bitsOf(gradientThreshold()));
+    key = mixKey(key, std::uint64_t(source()));
+    key = mixKey(key, std::uint64_t(std::int64_t(tag())));
+    key = mixKey(key, bitsOf(threshold().x));
+    key = mixKey(key, bitsOf(threshold().y));
+    key = mixKey(key, std::uint64_t(voxels()));
+    key = mixKey(key, bitsOf(gradientThreshold()));
     // The transfer function decides which voxels are taken only for VISIBLE selection or a
     // WHOLE region; otherwise only its data range (the normalisation of v) matters, so editing
     // its colours or opacities keeps the lists (the optimizer follows such edits).
     if (voxels() == VISIBLE || source() == WHOLE) {
-        key = mix(key, transferKey);
+        key = mixKey(key, transferKey);
     } else if (const auto& range = transferFunction.dataRange()) {
-        key = mix(mix(key, bitsOf(range->x)), bitsOf(range->y));
+        key = mixKey(mixKey(key, bitsOf(range->x)), bitsOf(range->y));
     }
     for (auto it = cache_.begin(); it != cache_.end(); ++it)
         if (it->grid.get() == &grid && it->tags.get() == tags && it->key == key) {
