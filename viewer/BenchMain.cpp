@@ -193,14 +193,7 @@ int sceneBenchmark(const Settings& st) {
         const RayCastOptions rayOptions;
         const bench::ReferenceImages reference =
             bench::renderReferenceViews(*root, st.options, views, rayOptions);
-        bench::ImageError error;
-        for (std::size_t i = 0; i < images.size(); ++i)
-            error.add(images[i], reference.images[i]);
-        row.hasError = true;
-        row.rmse = error.rmse();
-        row.psnr = error.psnr();
-        row.maxAbs = error.maxAbs();
-        row.errorFrames = int(images.size());
+        row.setError(images, reference.images);
         row.note = "reference error bound " + std::to_string(reference.errorBound);
         std::printf("%-44s %6zu views RMSE %.3e  PSNR %.2f dB  max abs %.3e  (reference %.1f "
                     "ms/frame, error bound %.2g%s)\n",

@@ -6,9 +6,21 @@
 #include <unistd.h>
 
 #include "ErrorPlot.h"
+#include "ImageError.h"
 #include <volsg/core/Error.h>
 
 namespace volsg::bench {
+
+void BenchRow::setError(const std::vector<Image>& images, const std::vector<Image>& reference) {
+    ImageError error;
+    for (std::size_t i = 0; i < images.size(); ++i)
+        error.add(images[i], reference[i]);
+    hasError = !images.empty();
+    rmse = error.rmse();
+    psnr = error.psnr();
+    maxAbs = error.maxAbs();
+    errorFrames = int(images.size());
+}
 
 namespace {
 

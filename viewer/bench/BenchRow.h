@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <volsg/image/Image.h>
+
 namespace volsg::bench {
 
 struct BenchRow {
@@ -23,6 +25,10 @@ struct BenchRow {
     std::string note;            ///< why n/a, convergence of the reference, ...
     std::string series;          ///< plot line this row belongs to ("" = not plotted)
     std::string pointLabel;      ///< text beside its plot point
+
+    /// The error of `images` against the reference images of the same views (pairwise):
+    /// rmse, psnr, maxAbs, errorFrames; hasError when there is at least one pair.
+    void setError(const std::vector<Image>& images, const std::vector<Image>& reference);
 };
 
 /// The table's heading and rows as fixed-width text on stdout.

@@ -254,14 +254,7 @@ NodeRow measure(LoadedCase& c, const NodeSetting& setting, const Reference& refe
     out.processCpuMs = medianOf(cpu);
     out.nodeCpuMs = medianOf(node);
     out.nodeCpuMaxMs = *std::max_element(node.begin(), node.end());
-    ImageError error;
-    for (std::size_t i = 0; i < images.size(); ++i)
-        error.add(images[i], reference.images[i]);
-    row.hasError = !images.empty();
-    row.rmse = error.rmse();
-    row.psnr = error.psnr();
-    row.maxAbs = error.maxAbs();
-    row.errorFrames = int(images.size());
+    row.setError(images, reference.images);
     const SlicingStats& stats = volume.slicingStats();
     row.memoryBytes = stats.textureBytes;
     row.memoryKind = "texture";

@@ -146,14 +146,7 @@ void setTimeAndError(BenchRow& row, const Samples& samples, const std::vector<Im
                      const ReferenceImages& reference) {
     row.ms = samples.median();
     row.frames = int(samples.ms.size());
-    ImageError error;
-    for (std::size_t i = 0; i < images.size(); ++i)
-        error.add(images[i], reference.images[i]);
-    row.hasError = !images.empty();
-    row.rmse = error.rmse();
-    row.psnr = error.psnr();
-    row.maxAbs = error.maxAbs();
-    row.errorFrames = int(images.size());
+    row.setError(images, reference.images);
 }
 
 /// Times the rotating views with one setting of the Volume node and measures the error views.
@@ -338,17 +331,10 @@ std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
             RayCastOptions coarse;
             coarse.tolerance = tolerance;
             const ReferenceImages images = renderReferenceViews(*root, options, views, coarse);
-            ImageError error;
-            for (std::size_t i = 0; i < images.images.size(); ++i)
-                error.add(images.images[i], truth.images[i]);
             BenchRow row = truthRow;
             row.setting = format("tolerance %g", tolerance);
             row.ms = images.ms.median();
-            row.hasError = !images.images.empty();
-            row.rmse = error.rmse();
-            row.psnr = error.psnr();
-            row.maxAbs = error.maxAbs();
-            row.errorFrames = int(images.images.size());
+            row.setError(images.images, truth.images);
             row.memoryBytes = images.rssDelta;
             row.note = format("error bound %.2g", images.errorBound);
             row.series = "reference";
