@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <exception>
 
+#include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/context/Context.h>
+#include <volsg/manipulators/ExaminerNavigation.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/Cone.h>
 #include <volsg/nodes/Light.h>
@@ -49,6 +51,12 @@ int main(int argc, char** argv) {
         under->addChild(down);
         under->addChild(cone);
         root->addChild(under);
+
+        // Frame the whole scene as the viewer's "view all" does.
+        ExaminerNavigation navigation(camera, 480, 320);
+        BoundingBoxAction bounds;
+        bounds.apply(*root);
+        navigation.viewAll(bounds.boundingBox());
 
         auto context = Context::createOffscreen(Backend::OSMesa);
         Renderer renderer;
