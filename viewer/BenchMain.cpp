@@ -39,7 +39,7 @@ const char* usage =
     "                   [--volume-side N] [--csv FILE] [--plot FILE.svg] [--keep DIR]\n"
     "       volsg-bench --suite node [--size WxH] [--frames N] [--error-frames K]\n"
     "                   [--tolerance T] [--planes P,P,...] [--planes-only] [--cases NAME,...]\n"
-    "                   [--kinds dvr,dvr-lit,mip] [--scenes DIR]\n"
+    "                   [--kinds dvr,dvr-lit,mip] [--samples-per-plane K] [--scenes DIR]\n"
     "                   [--reference-dir DIR] [--compare DIR [--rows CSV]] [--keep DIR]\n"
     "                   [--csv FILE] [--plot FILE.svg]\n"
     "       volsg-bench --suite node --export-views DIR [--size WxH] [--frames N] ...\n"
@@ -56,7 +56,8 @@ const char* usage =
     "                  (planes per voxel, default 0.25) plane counts; ms/frame, process and\n"
     "                  node CPU per frame, bricks drawn and skipped, texture memory, error\n"
     "  --cases         ml256, chest-ct (default both); --kinds: dvr, dvr-lit, mip (default\n"
-    "                  all); --planes-only: only the --planes rows\n"
+    "                  all); --planes-only: only the --planes rows; --samples-per-plane: the\n"
+    "                  rows' Volume.samplesPerPlane (default 1)\n"
     "  --reference-dir keep the reference images there and reuse them on later runs\n"
     "  --export-views  write the cameras, volumes and transfer functions of the node suite\n"
     "                  for viewer/vtk/vtk_volume_bench.py into DIR, and stop\n"
@@ -80,6 +81,7 @@ struct Settings {
     std::vector<double> planes;
     std::vector<std::string> cases, kinds;
     bool planesOnly = false;
+    int samplesPerPlane = 1;
     std::string scenesDir = VOLSG_BENCH_SCENES_DIR;
     std::string referenceDir, exportDir, compareDir, rowsCsv;
     RenderOptions options;
@@ -264,6 +266,7 @@ int nodeSuite(const Settings& st) {
     ns.cases = st.cases;
     ns.kinds = st.kinds;
     ns.planesOnly = st.planesOnly;
+    ns.samplesPerPlane = st.samplesPerPlane;
     ns.referenceDir = st.referenceDir;
     ns.keepDir = st.keepDir;
     ns.compareDir = st.compareDir;
@@ -311,6 +314,8 @@ int run(int argc, char** argv) {
             st.kinds = splitList(args.value(a));
         else if (a == "--planes-only")
             st.planesOnly = true;
+        else if (a == "--samples-per-plane")
+            st.samplesPerPlane = args.intValue(a, 1, 64);
         else if (a == "--scenes")
             st.scenesDir = args.value(a);
         else if (a == "--reference-dir")

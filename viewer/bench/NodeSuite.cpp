@@ -96,6 +96,7 @@ struct NodeSetting {
     double planesPerVoxel = 0.0; ///< 0: numPlanes 0 (automatic, 2 per voxel along the view)
     bool interactive = false;
     bool preIntegrated = false;
+    int samplesPerPlane = 1; ///< DVR and MIP
 };
 
 std::string modeName(int mode) {
@@ -109,6 +110,7 @@ std::string settingText(const NodeSetting& s) {
                                 : std::string(", auto planes");
     t += s.interactive ? ", interactive" : ", still";
     if (s.preIntegrated) t += ", pre-int";
+    if (s.samplesPerPlane > 1) t += format(", %g samples/plane", double(s.samplesPerPlane));
     return t;
 }
 
@@ -119,6 +121,7 @@ std::vector<NodeSetting> settingsOf(const NodeSuiteSettings& st) {
     };
     std::vector<NodeSetting> out;
     const auto add = [&](int mode, bool lighting) {
+        const std::size_t first = out.size();
         if (!st.planesOnly) {
             out.push_back({mode, lighting, 0.0, false, false});
             out.push_back({mode, lighting, 0.0, true, false});
@@ -126,6 +129,8 @@ std::vector<NodeSetting> settingsOf(const NodeSuiteSettings& st) {
         }
         for (double p : st.planesPerVoxel)
             out.push_back({mode, lighting, p, false, false});
+        for (std::size_t i = first; i < out.size(); ++i)
+            out[i].samplesPerPlane = st.samplesPerPlane;
     };
     if (wanted("dvr")) add(Volume::DVR, false);
     if (wanted("dvr-lit")) add(Volume::DVR, true);
@@ -210,6 +215,7 @@ NodeRow measure(LoadedCase& c, const NodeSetting& setting, const Reference& refe
     volume.renderMode = setting.mode;
     volume.lighting = setting.lighting;
     volume.preIntegrated = setting.preIntegrated;
+    volume.samplesPerPlane = setting.samplesPerPlane;
     volume.numPlanes =
         setting.planesPerVoxel > 0.0 ? int(std::ceil(setting.planesPerVoxel * c.diagonalInL0)) : 0;
     volume.interactivePlanes = 0;
@@ -305,6 +311,12 @@ bool parseSetting(const std::string& text, NodeSetting& s) {
     s.lighting = has("DVR lit");
     s.interactive = has("interactive");
     s.preIntegrated = has("pre-int");
+    s.samplesPerPlane = 1;
+    const std::size_t samplesAt = text.find(" samples/plane");
+    if (samplesAt != std::string::npos) {
+        const std::size_t start = text.rfind(", ", samplesAt);
+        s.samplesPerPlane = std::stoi(text.substr(start + 2, samplesAt - start - 2));
+    }
     s.planesPerVoxel = 0.0;
     const std::size_t at = text.find(" planes/voxel");
     if (at != std::string::npos) {
@@ -422,7 +434,9 @@ const VtkRow* findVtk(const std::vector<VtkRow>& rows, const std::string& caseNa
 
 /// Planes per voxel of a setting: automatic is 2 along the view, interactive a quarter of it.
 double densityOf(const NodeSetting& s) {
-    return s.planesPerVoxel > 0.0 ? s.planesPerVoxel : (s.interactive ? 0.5 : 2.0);
+    // Automatic plane counts keep 2 samples per voxel whatever the samples per plane.
+    if (s.planesPerVoxel <= 0.0) return s.interactive ? 0.5 : 2.0;
+    return s.planesPerVoxel * double(s.samplesPerPlane);
 }
 
 /// The side-by-side: per case and kind, our fastest setting whose RMSE is at most VTK GPU's

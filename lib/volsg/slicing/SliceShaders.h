@@ -91,6 +91,7 @@ uniform vec3 uRegionColor[2];
 uniform vec2 uRegionWeight;
 uniform uint uInfoMask;      // MIP/MINIP: low key bits that carry row * 2 + region
 uniform bool uFacePass;      // drawing the volume box's front faces, for slivers (see main)
+uniform int uSlabSamples;    // DVR: samples per slab, composited inside the fragment
 uniform float uLayoutNear;   // eye depth of the plane layout's start: plane k at
                              // uLayoutNear + (k + 0.5) * uPlaneSpacing
 
@@ -135,13 +136,14 @@ vec2 slabInterval(vec3 origin, vec3 dir, vec3 lo, vec3 hi) {
 }
 
 #ifdef TAGGED
-// The slab [vLocal - front, vLocal + back] along `dir`, split at the faces of the tag cell of
-// vLocal: each part is classified with its own cell's tag and data at its middle, so tag
+// The slab [origin - front, origin + back] along `dir`, split at the faces of the tag cell of
+// origin: each part is classified with its own cell's tag and data at its middle, so tag
 // boundaries (steps of the transfer function) fall where the cell faces are, as in the
 // reference, rather than where the planes are. Gives the length-weighted mean tau L0 and the
 // extinction-weighted colour of the slab.
-void classifySlab(vec3 dir, float front, float back, out vec3 color, out float tauL0) {
-    vec3 u0 = voxelCoord(vLocal);
+void classifySlab(vec3 origin, vec3 dir, float front, float back, out vec3 color,
+                  out float tauL0) {
+    vec3 u0 = voxelCoord(origin);
     vec3 cell = clamp(floor(u0), vec3(0.0), uVoxelCount - 1.0);
     vec2 inCell = slabInterval(u0, dir * uInvSpacing, cell, cell + 1.0);
     float cut[4] = float[4](-front, clamp(inCell.x, -front, back), 0.0, back);
@@ -152,7 +154,7 @@ void classifySlab(vec3 dir, float front, float back, out vec3 color, out float t
     for (int i = 0; i < 3; ++i) {
         float length = cut[i + 1] - cut[i];
         if (!(length > 0.0) && i != 1) continue;
-        vec3 x = vLocal + dir * (0.5 * (cut[i] + cut[i + 1]));
+        vec3 x = origin + dir * (0.5 * (cut[i] + cut[i + 1]));
         int row = rowAt(x);
         vec4 rgba = classify(normalised(dataAt(texCoord(x)), rangeOf(row)), row);
         float tau = rgba.a * max(length, 0.0);
@@ -177,14 +179,14 @@ float planeOpacityAt(float t) {
 #ifdef LIGHTING
 // Inventor's Phong model with the transfer-function colour as ambient and diffuse colour and
 // the normal from the gradient of v (central differences, one voxel either side).
-vec3 shade(vec3 C, vec3 tc, vec2 range) {
+vec3 shade(vec3 C, vec3 tc, vec2 range, vec3 local) {
     vec3 texel = 1.0 / uTexSize;
     vec3 g = vec3(dataAt(tc + vec3(texel.x, 0, 0)) - dataAt(tc - vec3(texel.x, 0, 0)),
                   dataAt(tc + vec3(0, texel.y, 0)) - dataAt(tc - vec3(0, texel.y, 0)),
                   dataAt(tc + vec3(0, 0, texel.z)) - dataAt(tc - vec3(0, 0, texel.z)));
     float width = range.y - range.x;
     g *= 0.5 * uInvSpacing / (width != 0.0 ? width : 1.0); // dv per local unit
-    vec3 world = (uModel * vec4(vLocal, 1.0)).xyz;
+    vec3 world = (uModel * vec4(local, 1.0)).xyz;
     vec3 V = normalize(uViewer.xyz - world * uViewer.w);
     vec3 gw = uNormalMatrix * g;
     // Homogeneous regions have no surface: they face the viewer.
@@ -200,6 +202,25 @@ vec3 shade(vec3 C, vec3 tc, vec2 range) {
         color += uLightColor[i] * (C * NdotL + uSpecular * specular);
     }
     return color;
+}
+#endif
+
+#if MODE == 1 || MODE == 2
+// MIP / MINIP: keeps the extreme v of the samples it is given, with the row and BoxClip region
+// of that sample; samples in a removed BoxClip region do not count.
+void considerExtreme(vec3 x, inout float best, inout int bestInfo) {
+    int rowHere = rowAt(x);
+    int regionHere = 0;
+    if (uHasBoxClip) {
+        vec3 q = (uLocalToBox * vec4(x, 1.0)).xyz;
+        regionHere = all(greaterThanEqual(q, uBoxMin)) && all(lessThanEqual(q, uBoxMax)) ? 1 : 0;
+    }
+    if ((regionHere == 1 ? uRegionOpacity.y : uRegionOpacity.x) <= 0.0) return;
+    float v = normalised(dataAt(texCoord(x)), rangeOf(rowHere));
+    if (MODE == 1 ? v > best : v < best) {
+        best = v;
+        bestInfo = rowHere * 2 + regionHere;
+    }
 }
 #endif
 
@@ -273,54 +294,83 @@ void main() {
     // slab cut by a box face gets each region's opacity and colour for its own length.
     int region = 0;
     float insideLength = 0.0;
+    vec2 inClip = vec2(0.0); // the ray's stretch inside the BoxClip box, from vLocal
     if (uHasBoxClip) {
         vec3 q = (uLocalToBox * vec4(p, 1.0)).xyz;
         region = all(greaterThanEqual(q, uBoxMin)) && all(lessThanEqual(q, uBoxMax)) ? 1 : 0;
         // The slab is measured from vLocal.
-        vec2 inClip = slabInterval((uLocalToBox * vec4(vLocal, 1.0)).xyz,
+        inClip = slabInterval((uLocalToBox * vec4(vLocal, 1.0)).xyz,
                                    mat3(uLocalToBox) * dir, uBoxMin, uBoxMax);
         insideLength = max(0.0, min(back, inClip.y) - max(-front, inClip.x));
     }
     float outsideLength = max(thickness - insideLength, 0.0);
 
 #if MODE == 0
-    float m = uHasPlaneOpacity ? planeOpacityAt((depth - uBoxNear) / (uBoxFar - uBoxNear)) : 1.0;
-    float wIn = uRegionOpacity.y * insideLength;
-    float wOut = uRegionOpacity.x * outsideLength;
-    float weighted = (wIn + wOut) * m; // local length, times the modifiers of tau
-    if (!(weighted > 0.0)) discard;
-    vec3 tc = texCoord(p);
+    // The slab in `parts` equal parts, each sampled at its middle and composited front to back
+    // here (one part: sampled at the plane point itself). A plane then stands for several
+    // samples along its ray, which costs far less than as many planes where each fragment has
+    // a large fixed cost (llvmpipe: rasterisation, the set-up above, the float blend).
+    int parts = uFacePass ? 1 : max(uSlabSamples, 1);
+    float partLength = thickness / float(parts);
+    vec3 emitted = vec3(0.0);
+    float depthSum = 0.0; // optical depth in front of the current part, within the slab
+    for (int j = 0; j < parts; ++j) {
+        float a = parts == 1 ? -front : -front + float(j) * partLength;
+        float b = parts == 1 ? back : a + partLength;
+        float middle = 0.5 * (a + b);
+        vec3 x = parts == 1 ? p : vLocal + dir * middle;
+        float inLength = insideLength;
+        float outLength = outsideLength;
+        if (parts > 1) {
+            inLength = uHasBoxClip ? max(0.0, min(b, inClip.y) - max(a, inClip.x)) : 0.0;
+            outLength = max((b - a) - inLength, 0.0);
+        }
+        float xDepth = parts == 1 ? depth : depth + depthRate * middle;
+        float m = uHasPlaneOpacity ? planeOpacityAt((xDepth - uBoxNear) / (uBoxFar - uBoxNear))
+                                   : 1.0;
+        float wIn = uRegionOpacity.y * inLength;
+        float wOut = uRegionOpacity.x * outLength;
+        float weighted = (wIn + wOut) * m; // local length, times the modifiers of tau
+        if (!(weighted > 0.0)) continue;
+        int rowX = parts == 1 ? row : rowAt(x);
+        vec2 rangeX = parts == 1 ? range : rangeOf(rowX);
+        vec3 tc = texCoord(x);
 #ifdef PREINTEGRATED
-    float vFront = normalised(dataAt(texCoord(vLocal - dir * front)), range);
-    float vBack = normalised(dataAt(texCoord(vLocal + dir * back)), range);
-    vec4 segment = texture(uPreIntegrated,
-                           (vec2(vFront, vBack) * float(PRE_SIZE - 1) + 0.5) / float(PRE_SIZE));
-    vec3 C = segment.rgb;
-    float D = segment.a * weighted * uInvL0;
+        float vFront = normalised(dataAt(texCoord(vLocal + dir * a)), rangeX);
+        float vBack = normalised(dataAt(texCoord(vLocal + dir * b)), rangeX);
+        vec4 segment = texture(uPreIntegrated, (vec2(vFront, vBack) * float(PRE_SIZE - 1) + 0.5) /
+                                                   float(PRE_SIZE));
+        vec3 C = segment.rgb;
+        float D = segment.a * weighted * uInvL0;
 #else
-    vec3 C;
-    float tauL0;
+        vec3 C;
+        float tauL0;
 #ifdef TAGGED
-    if (!uFacePass) {
-        classifySlab(dir, front, back, C, tauL0);
-    } else
+        if (!uFacePass) {
+            if (parts == 1) classifySlab(vLocal, dir, front, back, C, tauL0);
+            else classifySlab(x, dir, 0.5 * (b - a), 0.5 * (b - a), C, tauL0);
+        } else
 #endif
-    {
-        vec4 rgba = classify(normalised(dataAt(tc), range), row);
-        C = rgba.rgb;
-        tauL0 = rgba.a;
-    }
-    float D = tauL0 * weighted * uInvL0;
+        {
+            vec4 rgba = classify(normalised(dataAt(tc), rangeX), rowX);
+            C = rgba.rgb;
+            tauL0 = rgba.a;
+        }
+        float D = tauL0 * weighted * uInvL0;
 #endif
-    // Each region's share of the extinction emits its own blended colour.
-    C = (wIn * mix(C, uRegionColor[1], uRegionWeight.y) +
-         wOut * mix(C, uRegionColor[0], uRegionWeight.x)) / (wIn + wOut);
+        // Each region's share of the extinction emits its own blended colour.
+        C = (wIn * mix(C, uRegionColor[1], uRegionWeight.y) +
+             wOut * mix(C, uRegionColor[0], uRegionWeight.x)) / (wIn + wOut);
 #ifdef LIGHTING
-    C = shade(C, tc, range);
+        C = shade(C, tc, rangeX, parts == 1 ? vLocal : x);
 #endif
-    float alpha = opacityOf(D);
+        // exp(-0) is exactly 1: one part gives C alpha as before.
+        emitted += exp(-depthSum) * opacityOf(D) * C;
+        depthSum += D;
+    }
+    float alpha = opacityOf(depthSum);
     if (!(alpha > 0.0)) discard;
-    fragColor = vec4(C * alpha, alpha);
+    fragColor = vec4(emitted, alpha);
 #elif MODE == 3
     // The kept length of the slab weighs the sample.
     float kept = (uRegionOpacity.y > 0.0 ? insideLength : 0.0) +
@@ -329,30 +379,38 @@ void main() {
     float v = normalised(dataAt(texCoord(p)), range);
     fragColor = vec4(v * kept, kept, 0.0, 0.0);
 #else
-    // The extreme v over the slab: at the sample point and where the ray crosses the voxel-
-    // centre plane nearest to it along each axis (the trilinear field's kinks, where peaks of
-    // thin structures sit), skipping samples in a removed BoxClip region.
+    // The extreme v over the slab. One part: at the sample point and where the ray crosses the
+    // voxel-centre plane nearest to it along each axis (the trilinear field's kinks, where
+    // peaks of thin structures sit). More parts: the middle of each part and every crossing of
+    // a voxel-centre plane in the slab, so thick slabs still find the peaks.
     float best = MODE == 1 ? -1.0 : 2.0;
     int bestInfo = 0;
     vec3 u0 = voxelCoord(vLocal);
     vec3 du = dir * uInvSpacing;
-    vec3 tCentre = (floor(u0) + 0.5 - u0) / mix(du, vec3(1e-30), equal(du, vec3(0.0)));
-    vec4 ts = vec4(uFacePass ? 0.5 * back : 0.0, tCentre);
-    for (int i = 0; i < 4; ++i) {
-        float t = ts[i];
-        if (t < -front || t > back) continue;
-        vec3 x = vLocal + dir * t;
-        int rowHere = rowAt(x);
-        int regionHere = 0;
-        if (uHasBoxClip) {
-            vec3 q = (uLocalToBox * vec4(x, 1.0)).xyz;
-            regionHere = all(greaterThanEqual(q, uBoxMin)) && all(lessThanEqual(q, uBoxMax)) ? 1 : 0;
+    int parts = uFacePass ? 1 : max(uSlabSamples, 1);
+    if (parts == 1) {
+        vec3 tCentre = (floor(u0) + 0.5 - u0) / mix(du, vec3(1e-30), equal(du, vec3(0.0)));
+        vec4 ts = vec4(uFacePass ? 0.5 * back : 0.0, tCentre);
+        for (int i = 0; i < 4; ++i) {
+            float t = ts[i];
+            if (t < -front || t > back) continue;
+            considerExtreme(vLocal + dir * t, best, bestInfo);
         }
-        if ((regionHere == 1 ? uRegionOpacity.y : uRegionOpacity.x) <= 0.0) continue;
-        float v = normalised(dataAt(texCoord(x)), rangeOf(rowHere));
-        if (MODE == 1 ? v > best : v < best) {
-            best = v;
-            bestInfo = rowHere * 2 + regionHere;
+    } else {
+        float partLength = thickness / float(parts);
+        for (int j = 0; j < parts; ++j)
+            considerExtreme(vLocal + dir * (-front + (float(j) + 0.5) * partLength), best,
+                            bestInfo);
+        for (int axis = 0; axis < 3; ++axis) {
+            float d = du[axis];
+            if (d == 0.0) continue;
+            float ua = u0[axis] - d * front;
+            float ub = u0[axis] + d * back;
+            float first = ceil(min(ua, ub) - 0.5) + 0.5;
+            float last = max(ua, ub);
+            for (int k = 0; k < 256 && first + float(k) <= last; ++k)
+                considerExtreme(vLocal + dir * ((first + float(k) - u0[axis]) / d), best,
+                                bestInfo);
         }
     }
     if (best < 0.0 || best > 1.0) discard; // every sample removed

@@ -667,8 +667,10 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     const double localPerEyeAxis = glm::length(eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0));
     const double depthExtent = boxDepth.y - boxDepth.x;
     const double autoSpacing = 0.5 * L0 / localPerEyeAxis;
-    long still = settings.numPlanes > 0 ? long(settings.numPlanes)
-                                        : long(std::ceil(depthExtent / autoSpacing));
+    const int slabSamples = mode != kAverage ? std::clamp(settings.samplesPerPlane, 1, 64) : 1;
+    long still = settings.numPlanes > 0
+                     ? long(settings.numPlanes)
+                     : long(std::ceil(depthExtent / (autoSpacing * double(slabSamples))));
     still = std::clamp(still, 1L, long(kMaxPlanes));
     long planes = still;
     if (action.isInteractive()) {
@@ -765,6 +767,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
                                              -modelView[3][2]));
         program.set("uOrthographic", view.orthographic ? 1 : 0);
         program.set("uPlaneSpacing", float(layout.spacing));
+        program.set("uSlabSamples", slabSamples);
         program.set("uLayoutNear", float(layout.nearDepth));
         program.set("uFacePass", 0);
         program.set("uInvL0", float(1.0 / L0));

@@ -19,7 +19,11 @@ class RenderAction;
 struct SlicingSettings {
     int numPlanes = 0;         ///< planes over the box's depth for a still frame; 0 = automatic
     int interactivePlanes = 0; ///< planes while interacting; 0 = a quarter of the still count
-    bool nearest = false;      ///< nearest-neighbour data instead of trilinear
+    /// DVR, MIP, MINIP: samples each plane's slab takes along its ray (DVR composites them in
+    /// the fragment; MIP/MINIP also take every voxel-centre crossing in the slab); the
+    /// automatic plane count divides by it, keeping 2 samples per voxel.
+    int samplesPerPlane = 1;
+    bool nearest = false; ///< nearest-neighbour data instead of trilinear
     bool preIntegrated = false;
     bool lighting = false;
     std::uint64_t textureBudget = 0; ///< bytes of 3D textures; 0 = only the driver's size limit

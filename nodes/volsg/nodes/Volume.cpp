@@ -86,6 +86,7 @@ void Volume::render(RenderAction& action) {
     SlicingSettings settings;
     settings.numPlanes = numPlanes();
     settings.interactivePlanes = interactivePlanes();
+    settings.samplesPerPlane = samplesPerPlane();
     settings.nearest = interpolation() == NEAREST;
     settings.preIntegrated = preIntegrated();
     settings.lighting = lighting();

@@ -19,6 +19,9 @@ public:
     SFEnum renderMode{this, "renderMode", renderModeNames, DVR};
     SFInt32 numPlanes{this, "numPlanes", 0};                 ///< 0: >= 2 per voxel along the view
     SFInt32 interactivePlanes{this, "interactivePlanes", 0}; ///< 0: numPlanes / 4
+    /// DVR: samples per plane, composited along each pixel's ray inside the plane's slab
+    /// (fewer planes for the same sampling; 0 numPlanes keeps 2 samples per voxel).
+    SFInt32 samplesPerPlane{this, "samplesPerPlane", 1};
     SFEnum interpolation{this, "interpolation", interpolationNames, LINEAR};
     SFBool preIntegrated{this, "preIntegrated", false};
     SFBool lighting{this, "lighting", false};
