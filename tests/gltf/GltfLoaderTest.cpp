@@ -382,7 +382,7 @@ TEST_CASE("broken sample files fail with an error naming the file") {
 
 TEST_CASE("bad files throw errors that name the file and the glTF element") {
     const std::string missing = (gltfScratch() / "nothing-here.glb").string();
-    CHECK(contains(loadError(missing), "nothing-here.glb: no such file"));
+    CHECK(contains(loadError(missing), "nothing-here.glb: cannot read glTF file: No such file"));
 
     // An external buffer that is not there.
     GltfBuilder e;

@@ -339,7 +339,11 @@ TEST_CASE("dimensions beyond the byte limit are refused before allocating") {
     layout.dimensions = {2147483647, 2147483647, 2147483647};
     const Caught overflow = errorOf([&] { readRawVolume(path, layout); });
     CHECK_HAS(overflow.what, "tiny.raw");
-    CHECK_HAS(overflow.what, "exceeds the allocation limit");
+    CHECK_HAS(overflow.what, "exceed the limit of 65536 voxels per axis"); // core/Limits.h
+
+    layout.dimensions = {65536, 65536, 65536}; // every axis allowed, the product is not
+    const Caught product = errorOf([&] { readRawVolume(path, layout); });
+    CHECK_HAS(product.what, "exceeds the allocation limit");
 
     layout.dimensions = {20, 20, 20}; // 32000 bytes against a limit of 1000
     const Caught limit = errorOf([&] { readRawVolume(path, layout, 1000); });

@@ -8,6 +8,7 @@
 #include "ErrorPlot.h"
 #include "ImageError.h"
 #include <volsg/core/Error.h>
+#include <volsg/io/AtomicFile.h>
 
 namespace volsg::bench {
 
@@ -79,9 +80,7 @@ void printRow(const BenchRow& row) {
     std::fflush(stdout);
 }
 
-void writeCsv(const std::string& path, const std::vector<BenchRow>& rows) {
-    std::ofstream out(path);
-    if (!out) throw Error("cannot write '" + path + "'");
+static void writeCsvRows(std::ostream& out, const std::vector<BenchRow>& rows) {
     out << "scene,path,setting,available,ms_per_frame,frames,rmse,psnr_db,max_abs_error,"
            "error_frames,memory_bytes,memory_kind,note\n";
     for (const BenchRow& r : rows) {
@@ -101,7 +100,11 @@ void writeCsv(const std::string& path, const std::vector<BenchRow>& rows) {
         if (!r.memoryKind.empty()) out << r.memoryBytes;
         out << ',' << csvCell(r.memoryKind) << ',' << csvCell(r.note) << '\n';
     }
-    if (!out) throw Error("cannot write '" + path + "'");
+}
+
+void writeCsv(const std::string& path, const std::vector<BenchRow>& rows) {
+    // Through a temporary file: a failed run never destroys the previous CSV.
+    writeFileAtomically(path, [&rows](std::ostream& out) { writeCsvRows(out, rows); });
 }
 
 void writeRowsPlot(const std::string& path, const std::string& title,

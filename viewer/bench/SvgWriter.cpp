@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include <volsg/core/Error.h>
+#include <volsg/io/AtomicFile.h>
 
 namespace volsg::bench {
 
@@ -114,10 +115,7 @@ std::string SvgWriter::str() const {
 }
 
 void SvgWriter::save(const std::string& path) const {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw Error("cannot write '" + path + "'");
-    out << str();
-    if (!out) throw Error("cannot write '" + path + "'");
+    writeFileAtomically(path, str()); // a failed save keeps the previous plot
 }
 
 } // namespace volsg::bench

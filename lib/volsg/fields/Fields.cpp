@@ -1,6 +1,7 @@
 // Reading and writing of every field type in Inventor ASCII, and the field factory used for
 // self-described (unknown) nodes.
 #include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
 #include <volsg/io/Tokenizer.h>
@@ -208,6 +209,12 @@ template <class Traits> constexpr std::size_t valuesPerLine() {
                                      std::to_string(open.column) + " has no closing ']'");
 }
 
+[[noreturn]] void failTooManyValues(Tokenizer& tokens, const char* type) {
+    tokens.failAt(tokens.peek(), std::string("more than ") +
+                                     std::to_string(limits::maxFieldValues) + " values in one " +
+                                     type + " field");
+}
+
 [[noreturn]] void typeMismatch(const Field& to, const Field& from) {
     throw Error(std::string("cannot copy a ") + from.typeName() + " into the " + to.typeName() +
                 " field '" + to.name() + "'");
@@ -359,6 +366,7 @@ template <class Traits> void MField<Traits>::read(FieldInput& in) {
     const Token open = tokens.next();
     while (!tokens.acceptPunct(']')) {
         if (tokens.atEnd()) failUnclosedList(tokens, open, Traits::mfName);
+        if (values.size() >= limits::maxFieldValues) failTooManyValues(tokens, Traits::mfName);
         values.push_back(Traits::read(tokens));
         tokens.acceptPunct(',');
     }
@@ -575,6 +583,7 @@ void MFNode::read(FieldInput& in) {
         const Token open = tokens.next();
         while (!tokens.acceptPunct(']')) {
             if (tokens.atEnd()) failUnclosedList(tokens, open, "MFNode");
+            if (values.size() >= limits::maxFieldValues) failTooManyValues(tokens, "MFNode");
             values.push_back(in.readNode());
             tokens.acceptPunct(',');
         }

@@ -13,9 +13,12 @@ namespace {
 std::mutex recordedMutex;
 std::vector<std::string> recordedErrors;
 
-void GLAD_API_PTR recordDebugMessage(GLenum /*source*/, GLenum type, GLuint id, GLenum /*severity*/,
+void GLAD_API_PTR recordDebugMessage(GLenum source, GLenum type, GLuint id, GLenum /*severity*/,
                                      GLsizei length, const GLchar* message, const void* /*user*/) {
     if (type != GL_DEBUG_TYPE_ERROR) return;
+    // Mesa repeats a failed compile's info log here; Shader reads the compile status and
+    // throws with that log, so it is no GL error (glGetError stays clean).
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     std::string text =
         length >= 0 ? std::string(message, std::size_t(length)) : std::string(message);
     std::lock_guard<std::mutex> lock(recordedMutex);

@@ -1,6 +1,7 @@
 #include <volsg/core/Error.h>
 #include <volsg/gl/GlLoader.h>
 
+#include <atomic>
 #include <mutex>
 #include <string>
 
@@ -11,7 +12,12 @@ namespace {
 // current at once from loading over each other.
 std::mutex loaderMutex;
 GLADloadfunc loadedFor = nullptr;
+std::atomic<ContextCreatedHook> contextCreatedHook{nullptr};
 } // namespace
+
+void setContextCreatedHook(ContextCreatedHook hook) {
+    contextCreatedHook = hook;
+}
 
 void loadGlFunctions(GLADloadfunc getProcAddress, const char* backendName) {
     std::lock_guard<std::mutex> lock(loaderMutex);
@@ -35,6 +41,7 @@ void requireCoreGl33(const char* backendName) {
         throw Error(std::string(backendName) + ": OpenGL 3.3 core profile required, got " +
                     (version ? version : "no version string"));
     }
+    if (const ContextCreatedHook hook = contextCreatedHook) hook();
 }
 
 } // namespace volsg

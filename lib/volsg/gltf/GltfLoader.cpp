@@ -1,7 +1,9 @@
 // tinygltf parses JSON, decodes base64 and images; everything it hands over is checked here
 // before a byte of it is read, because tinygltf does not check accessors against their views.
 #include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 #include <volsg/gltf/GltfLoader.h>
+#include <volsg/io/RegularFile.h>
 
 #include <tiny_gltf.h>
 
@@ -23,9 +25,9 @@ namespace {
 
 /// Accessors without a bufferView are zeros (plus sparse values) that we allocate ourselves:
 /// their count is bounded so a hostile count cannot ask for gigabytes.
-constexpr std::size_t kMaxUnbackedCount = std::size_t(1) << 24;
+constexpr std::size_t kMaxUnbackedCount = limits::maxGltfUnbackedCount;
 /// Node trees deeper than this are refused (no real file comes near; recursion stays small).
-constexpr int kMaxNodeDepth = 256;
+constexpr int kMaxNodeDepth = limits::maxGltfNodeDepth;
 
 const std::set<std::string>& supportedRequiredExtensions() {
     static const std::set<std::string> names{"KHR_materials_unlit", "KHR_mesh_quantization"};
@@ -682,9 +684,149 @@ GltfAsset Loader::load() {
 
 } // namespace
 
-GltfAsset loadGltf(const std::string& path) {
+namespace {
+
+/// What tinygltf may read for one file: the file itself and the files its URIs name, all
+/// inside the glTF file's folder (no `..`, no absolute paths, no symbolic link leading out,
+/// no working-directory fallback) and each at most limits::maxGltfFileSize bytes.
+struct GltfFileAccess {
+    std::filesystem::path folder; ///< canonical
+    std::string refused;          ///< the first file refused, for the error message
+    std::string refusedWhy;
+};
+
+bool isInsideFolder(const GltfFileAccess& access, const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw Error("no such file", path);
+    const std::filesystem::path canonical = std::filesystem::canonical(path, ec);
+    if (ec) return false;
+    const std::filesystem::path relative = canonical.lexically_relative(access.folder);
+    return !relative.empty() && *relative.begin() != ".." && relative.is_relative();
+}
+
+bool allowedFileExists(const std::string& path, void* user) {
+    auto& access = *static_cast<GltfFileAccess*>(user);
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return false;
+    if (!isInsideFolder(access, path)) {
+        if (access.refused.empty()) {
+            access.refused = path;
+            access.refusedWhy = "outside the folder of the glTF file";
+        }
+        return false;
+    }
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        if (access.refused.empty()) {
+            access.refused = path;
+            access.refusedWhy = "not a regular file";
+        }
+        return false;
+    }
+    return true;
+}
+
+std::string unexpandedPath(const std::string& path, void*) {
+    return path; // no ~ or $VARIABLE expansion: a URI is a name, not a shell word
+}
+
+bool readAllowedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void* user) {
+    auto& access = *static_cast<GltfFileAccess*>(user);
+    if (!allowedFileExists(path, user)) {
+        if (err) *err += "refused to read " + path + ": outside the glTF file's folder\n";
+        return false;
+    }
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec || size > limits::maxGltfFileSize) {
+        if (access.refused.empty()) {
+            access.refused = path;
+            access.refusedWhy = ec ? ec.message()
+                                   : std::to_string(size) + " bytes, more than the limit of " +
+                                         std::to_string(limits::maxGltfFileSize);
+        }
+        if (err) *err += "cannot read " + path + "\n";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    out->resize(std::size_t(size));
+    if (!in || !in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
+        if (err) *err += "cannot read " + path + "\n";
+        return false;
+    }
+    return true;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "the glTF loader does not write files\n";
+    return false;
+}
+
+std::uint32_t bigEndian32(const unsigned char* p) {
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+}
+
+/// Width and height from a PNG or JPEG header; false for anything else or a broken header.
+bool imageHeaderSize(const unsigned char* bytes, std::size_t size, std::uint32_t& width,
+                     std::uint32_t& height) {
+    static constexpr unsigned char pngMagic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size >= 24 && std::memcmp(bytes, pngMagic, 8) == 0 &&
+        std::memcmp(bytes + 12, "IHDR", 4) == 0) {
+        width = bigEndian32(bytes + 16);
+        height = bigEndian32(bytes + 20);
+        return true;
+    }
+    if (size < 4 || bytes[0] != 0xFF || bytes[1] != 0xD8) return false;
+    // JPEG: walk the marker segments to the first start-of-frame (SOF0..SOF15 but DHT, JPG, DAC).
+    std::size_t pos = 2;
+    while (pos + 4 <= size) {
+        if (bytes[pos] != 0xFF) return false;
+        const unsigned char marker = bytes[pos + 1];
+        if (marker == 0xFF) {
+            ++pos; // fill byte
+            continue;
+        }
+        const std::size_t length = std::size_t(bytes[pos + 2]) << 8 | bytes[pos + 3];
+        if (length < 2) return false;
+        if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 &&
+            marker != 0xCC) {
+            if (pos + 9 > size) return false;
+            height = std::uint32_t(bytes[pos + 5]) << 8 | bytes[pos + 6];
+            width = std::uint32_t(bytes[pos + 7]) << 8 | bytes[pos + 8];
+            return true;
+        }
+        pos += 2 + length;
+    }
+    return false;
+}
+
+/// tinygltf's decoder (stb_image) behind a size check: an image header declaring more than
+/// limits::maxImageSide / maxImagePixels is refused before the decoder allocates its pixels.
+bool loadCheckedImage(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
+                      int requiredWidth, int requiredHeight, const unsigned char* bytes, int size,
+                      void* user) {
+    std::uint32_t width = 0, height = 0;
+    const std::string what = "images[" + std::to_string(index) + "]";
+    if (size <= 0 || !imageHeaderSize(bytes, std::size_t(size), width, height)) {
+        if (err) *err += what + ": not a PNG or JPEG image (or its header is broken)\n";
+        return false;
+    }
+    if (width == 0 || height == 0 || width > limits::maxImageSide ||
+        height > limits::maxImageSide || std::uint64_t(width) * height > limits::maxImagePixels) {
+        if (err)
+            *err += what + ": " + std::to_string(width) + "x" + std::to_string(height) +
+                    " pixels exceeds the image limit (" + std::to_string(limits::maxImageSide) +
+                    " per side, " + std::to_string(limits::maxImagePixels) + " in all)\n";
+        return false;
+    }
+    return tinygltf::LoadImageData(image, index, err, warn, requiredWidth, requiredHeight, bytes,
+                                   size, user);
+}
+
+} // namespace
+
+GltfAsset loadGltf(const std::string& path) {
+    regularFileSize(path, "cannot read glTF file", limits::maxGltfFileSize);
+    std::error_code ec;
     char magic[4] = {};
     {
         std::ifstream in(path, std::ios::binary);
@@ -693,11 +835,19 @@ GltfAsset loadGltf(const std::string& path) {
     }
     const bool binary = std::memcmp(magic, "glTF", 4) == 0;
 
+    GltfFileAccess access;
+    access.folder = std::filesystem::canonical(path, ec).parent_path();
+    if (ec) throw Error("cannot resolve the file's folder: " + ec.message(), path);
     tinygltf::Model model;
     tinygltf::TinyGLTF parser;
+    parser.SetFsCallbacks(
+        {&allowedFileExists, &unexpandedPath, &readAllowedFile, &refuseWrite, &access});
+    parser.SetImageLoader(&loadCheckedImage, nullptr);
     std::string err, warn;
     const bool ok = binary ? parser.LoadBinaryFromFile(&model, &err, &warn, path)
                            : parser.LoadASCIIFromFile(&model, &err, &warn, path);
+    if (!access.refused.empty())
+        throw Error("refused to read '" + access.refused + "': " + access.refusedWhy, path);
     if (!ok || !err.empty())
         throw Error(err.empty() ? std::string("tinygltf could not read the file")
                                 : "tinygltf: " + firstLine(err),

@@ -1,6 +1,9 @@
 // PNG (own encoder/decoder over zlib) and PFM files for Image.
 #include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 #include <volsg/image/Image.h>
+#include <volsg/io/AtomicFile.h>
+#include <volsg/io/RegularFile.h>
 
 #include <algorithm>
 #include <array>
@@ -24,42 +27,29 @@ namespace {
 
 // Readers refuse images above this many pixels (and either side above 1 << 16), so a corrupt
 // header cannot make them allocate without bound.
-constexpr std::uint64_t kMaxPixels = std::uint64_t(1) << 28;
-constexpr std::uint32_t kMaxSide = std::uint32_t(1) << 16;
+constexpr std::uint64_t kMaxPixels = limits::maxImagePixels;
+constexpr std::uint32_t kMaxSide = limits::maxImageSide;
 
 [[noreturn]] void fail(const std::string& path, const std::string& message) {
     throw Error(message, path);
 }
 
 std::vector<unsigned char> readWholeFile(const std::string& path) {
+    const std::uintmax_t size =
+        regularFileSize(path, "cannot open for reading", limits::maxImageFileSize);
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(path, "cannot open for reading");
-    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                     std::istreambuf_iterator<char>());
-    if (in.bad()) fail(path, "read error");
+    std::vector<unsigned char> bytes(static_cast<std::size_t>(size));
+    in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size));
+    if (in.gcount() != static_cast<std::streamsize>(size)) fail(path, "read error");
     return bytes;
 }
 
-/// Writes `bytes` to `path` through `path.tmp` and a rename, so a reader never sees half a file.
+/// Writes `bytes` through a temporary file and a rename, so a reader never sees half a file
+/// and a failed save keeps the old one.
 void writeWholeFile(const std::string& path, const std::vector<unsigned char>& bytes) {
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) fail(path, "cannot open '" + tmp + "' for writing");
-        out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::remove(tmp.c_str());
-            fail(path, "write error");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        fail(path, "cannot rename '" + tmp + "' into place: " + ec.message());
-    }
+    writeFileAtomically(
+        path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 void checkImage(const std::string& path, const Image& image) {

@@ -1,6 +1,8 @@
 #include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 #include <volsg/fields/Fields.h>
 #include <volsg/io/ReadContext.h>
+#include <volsg/io/RegularFile.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/io/Tokenizer.h>
 #include <volsg/io/UnknownNode.h>
@@ -166,6 +168,7 @@ private:
             tokens_.failAt(open, "nodes nested deeper than " +
                                      std::to_string(maxSceneNestingDepth) + " levels");
 
+        if (++nodeCount_ > limits::maxSceneNodes) failTooManyNodes(typeToken);
         ref_ptr<Node> node = type ? type->create() : nullptr;
         const bool described = tokens_.peek().isWord("fields") && !(node && node->field("fields"));
         UnknownNode* unknown = nullptr;
@@ -207,6 +210,8 @@ private:
                 tokens_.failAt(t, "field '" + t.text + "' of " + typeName +
                                       " must come before its children");
             } else if (children) {
+                if (children->size() >= limits::maxSceneChildren)
+                    failTooManyChildren(t, typeName, open);
                 children->push_back(readNodeValue(false));
                 childrenStarted = true;
             } else if (t.kind == Token::Kind::Word) {
@@ -221,20 +226,40 @@ private:
         return node;
     }
 
+    // Out of line: readNodeBody recurses once per nesting level, so the strings of these
+    // messages must not widen its stack frame (1000 levels under AddressSanitizer).
+    [[gnu::noinline]] [[noreturn]] void failTooManyNodes(const Token& at) {
+        tokens_.failAt(at,
+                       "more than " + std::to_string(limits::maxSceneNodes) + " nodes in one file");
+    }
+    [[gnu::noinline]] [[noreturn]] void
+    failTooManyChildren(const Token& at, const std::string& typeName, const Token& open) {
+        tokens_.failAt(at, typeName + " opened at " + position(open) + " has more than " +
+                               std::to_string(limits::maxSceneChildren) + " children");
+    }
+
     static Field* findField(Node& node, UnknownNode* unknown, std::string_view name) {
         return unknown ? unknown->findField(name) : node.field(name);
     }
 
     // fields [ SFFloat a, MFVec3f b ]: declares an unknown node's fields, or must match the
     // fields of a type we know.
-    void readFieldDescription(Node& node, UnknownNode* unknown, const std::string& typeName) {
+    // Out of line (as the value reader below): only readNodeBody's own frame is on the stack
+    // once per nesting level.
+    [[gnu::noinline]] void readFieldDescription(Node& node, UnknownNode* unknown,
+                                                const std::string& typeName) {
         tokens_.next(); // "fields"
         if (!tokens_.peek().isPunct('['))
             tokens_.failAt(tokens_.peek(), "expected '[' after 'fields' in " + typeName +
                                                ", found " + Tokenizer::describe(tokens_.peek()));
         const Token open = tokens_.next();
+        std::size_t declared = 0;
         while (!tokens_.acceptPunct(']')) {
             const Token& ft = tokens_.peek();
+            if (++declared > limits::maxDeclaredFields)
+                tokens_.failAt(ft, "the fields description of " + typeName +
+                                       " declares more than " +
+                                       std::to_string(limits::maxDeclaredFields) + " fields");
             if (ft.kind == Token::Kind::End)
                 tokens_.failAt(ft, "unexpected end of file: the fields description of " + typeName +
                                        " opened at " + position(open) + " has no closing ']'");
@@ -276,6 +301,11 @@ private:
             field.read(*this);
             return;
         }
+        readNonNodeFieldValue(field, nameToken, typeName);
+    }
+
+    [[gnu::noinline]] void readNonNodeFieldValue(Field& field, const Token& nameToken,
+                                                 const std::string& typeName) {
         try {
             field.read(*this);
         } catch (const Error& e) {
@@ -289,6 +319,7 @@ private:
     ReadContext context_;
     std::unordered_map<std::string, ref_ptr<Node>> defined_;
     int depth_ = 0;
+    std::size_t nodeCount_ = 0;
 };
 
 ref_ptr<Node> parse(std::string_view text, const std::string& fileName, std::string directory) {
@@ -300,13 +331,7 @@ ref_ptr<Node> parse(std::string_view text, const std::string& fileName, std::str
 } // namespace
 
 ref_ptr<Node> readScene(const std::string& path) {
-    std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (ec) throw Error("cannot read scene file: " + ec.message(), path);
-    if (size > maxSceneFileSize)
-        throw Error("scene file too large (" + std::to_string(size) + " bytes; the limit is " +
-                        std::to_string(maxSceneFileSize) + ")",
-                    path);
+    const std::uintmax_t size = regularFileSize(path, "cannot read scene file", maxSceneFileSize);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(std::string("cannot open scene file: ") + std::strerror(errno), path);
     std::string text(static_cast<std::size_t>(size), '\0');

@@ -5,15 +5,16 @@
 #include <string>
 #include <string_view>
 
+#include <volsg/core/Limits.h>
 #include <volsg/core/Node.h>
 
 namespace volsg {
 
 /// Deepest nesting of nodes the reader accepts (children and SFNode/MFNode values each count
 /// one level); deeper input is an error, never a stack overflow.
-inline constexpr int maxSceneNestingDepth = 1000;
+inline constexpr int maxSceneNestingDepth = limits::maxSceneNestingDepth;
 /// Largest scene file readScene() loads.
-inline constexpr std::uintmax_t maxSceneFileSize = std::uintmax_t(1) << 30;
+inline constexpr std::uintmax_t maxSceneFileSize = limits::maxSceneFileSize;
 
 /// Reads a scene file. One top-level node is returned as it is; several (or none) are wrapped
 /// in a Separator, as Coin does. Every node gets Node::readDone() with the file's folder, so

@@ -1,13 +1,11 @@
 #include <volsg/core/Error.h>
 #include <volsg/fields/Fields.h>
+#include <volsg/io/AtomicFile.h>
 #include <volsg/io/SceneWriter.h>
 #include <volsg/io/UnknownNode.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -208,24 +206,7 @@ std::string writeSceneToString(const Node& root) {
 }
 
 void writeSceneToFile(const std::string& path, const Node& root) {
-    const std::string temporary = path + ".tmp";
-    try {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw Error(std::string("cannot open for writing: ") + std::strerror(errno), temporary);
-        writeScene(out, root);
-        out.close();
-        if (!out) throw Error("cannot write (disk full?)", temporary);
-        std::filesystem::rename(temporary, path);
-    } catch (const std::filesystem::filesystem_error& e) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw Error(std::string("cannot replace the scene file: ") + e.code().message(), path);
-    } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw;
-    }
+    writeFileAtomically(path, [&root](std::ostream& out) { writeScene(out, root); });
 }
 
 } // namespace volsg

@@ -23,7 +23,8 @@ namespace volsg {
 /// Throws volsg::Error when a value cannot be written (a NaN or infinite float).
 void writeScene(std::ostream& out, const Node& root);
 
-/// Writes to `path` + ".tmp", then renames it to `path`: a failure leaves the old file as it was.
+/// Writes through a temporary file and a rename (io/AtomicFile.h): a failure leaves the old file
+/// as it was.
 void writeSceneToFile(const std::string& path, const Node& root);
 
 std::string writeSceneToString(const Node& root);

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include <volsg/core/Limits.h>
+
 namespace volsg {
 
 /// One token of an Inventor ASCII file.
@@ -30,9 +32,9 @@ struct Token {
 class Tokenizer {
 public:
     /// Longest word (names and numbers); anything longer is not Inventor text.
-    static constexpr std::size_t maxWordLength = std::size_t(1) << 20;
+    static constexpr std::size_t maxWordLength = limits::maxWordLength;
     /// Longest quoted string, after unescaping.
-    static constexpr std::size_t maxStringLength = std::size_t(64) << 20;
+    static constexpr std::size_t maxStringLength = limits::maxStringLength;
 
     /// `text` must outlive the tokenizer; `fileName` is used in error messages only.
     Tokenizer(std::string_view text, std::string fileName);

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 
 namespace volsg {
 
@@ -64,6 +65,10 @@ template <class T> T saturate(double v) {
 std::uint64_t VolumeGrid::checkedByteSize(glm::ivec3 d, VoxelType type, std::uint64_t byteLimit) {
     if (d.x < 1 || d.y < 1 || d.z < 1)
         throw Error("volume dimensions must be >= 1 each, got " + dimensionsText(d));
+    if (d.x > limits::maxVolumeDimension || d.y > limits::maxVolumeDimension ||
+        d.z > limits::maxVolumeDimension)
+        throw Error("volume dimensions " + dimensionsText(d) + " exceed the limit of " +
+                    std::to_string(limits::maxVolumeDimension) + " voxels per axis");
     // Multiply step by step, checking each product against the limit, so nothing overflows.
     const std::uint64_t size = voxelTypeSize(type);
     std::uint64_t bytes = size;
@@ -77,6 +82,13 @@ std::uint64_t VolumeGrid::checkedByteSize(glm::ivec3 d, VoxelType type, std::uin
     }
     if (bytes > std::uint64_t(std::numeric_limits<std::size_t>::max()))
         throw Error("volume of " + dimensionsText(d) + " does not fit in memory addresses");
+    // Whatever the caller allows, more than the machine has could only end in the OOM killer.
+    const std::uint64_t memory = limits::physicalMemoryBytes();
+    if (memory != 0 && bytes > memory)
+        throw Error("volume of " + dimensionsText(d) + " " + voxelTypeName(type) +
+                    " voxels needs " + std::to_string(bytes) +
+                    " bytes, more than this machine's memory (" + std::to_string(memory) +
+                    " bytes)");
     return bytes;
 }
 

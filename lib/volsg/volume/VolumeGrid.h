@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <volsg/core/Limits.h>
 #include <volsg/core/Object.h>
 
 namespace volsg {
@@ -34,7 +35,9 @@ class VolumeGrid : public Object {
 public:
     /// Largest storage create() allocates unless told otherwise: a bad header must give an
     /// Error, not an out-of-memory kill.
-    static constexpr std::uint64_t defaultByteLimit = std::uint64_t(4) << 30; // 4 GiB
+    /// 4 GiB (core/Limits.h); a grid is also refused when larger than the machine's memory or
+    /// when a dimension exceeds limits::maxVolumeDimension.
+    static constexpr std::uint64_t defaultByteLimit = limits::maxVolumeBytes;
 
     /// A zero-filled grid. Throws Error, before allocating anything, when a dimension is < 1,
     /// the voxel count or byte size overflows, the byte size exceeds `byteLimit`, or a spacing

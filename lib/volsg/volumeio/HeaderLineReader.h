@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include <volsg/core/Limits.h>
+
 namespace volsg {
 
 class InputFile;
@@ -17,8 +19,8 @@ class InputFile;
 /// header line the file is positioned at the first byte that follows it (attached data).
 class HeaderLineReader {
 public:
-    static constexpr std::size_t maxLineLength = std::size_t(64) << 10;
-    static constexpr std::size_t maxHeaderLength = std::size_t(1) << 20;
+    static constexpr std::size_t maxLineLength = limits::maxHeaderLineLength;
+    static constexpr std::size_t maxHeaderLength = limits::maxHeaderLength;
 
     explicit HeaderLineReader(InputFile& file) : file_(file) {}
 

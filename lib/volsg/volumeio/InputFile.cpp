@@ -77,4 +77,14 @@ void InputFile::fail(const std::string& message, int line) const {
     throw Error(message, path_, line);
 }
 
+std::unique_ptr<InputFile> InputFile::openDataFile(const std::string& headerPath,
+                                                   const std::string& name) {
+    try {
+        return std::make_unique<InputFile>(resolveBeside(headerPath, name));
+    } catch (const Error& e) {
+        throw Error(e.message() + " (the data file named in " + headerPath + ")", e.file(),
+                    e.line(), e.column());
+    }
+}
+
 } // namespace volsg

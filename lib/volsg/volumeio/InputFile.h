@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 namespace volsg {
@@ -33,6 +34,11 @@ public:
     /// `name` as written in the header at `headerPath`: relative names resolve against the
     /// header's folder.
     static std::string resolveBeside(const std::string& headerPath, const std::string& name);
+
+    /// Opens the data file `name` of the header at `headerPath` (resolveBeside); an error
+    /// names the data file and says which header named it.
+    static std::unique_ptr<InputFile> openDataFile(const std::string& headerPath,
+                                                   const std::string& name);
 
 private:
     std::string path_;

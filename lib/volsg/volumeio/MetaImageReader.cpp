@@ -144,7 +144,7 @@ ref_ptr<VolumeGrid> readMetaImage(const std::string& path, std::uint64_t byteLim
 
     const bool local = HeaderLineReader::lowercase(h.dataFile) == "local";
     std::unique_ptr<InputFile> detached;
-    if (!local) detached = std::make_unique<InputFile>(InputFile::resolveBeside(path, h.dataFile));
+    if (!local) detached = InputFile::openDataFile(path, h.dataFile);
     InputFile& data = detached ? *detached : *header;
 
     VoxelPayload payload;

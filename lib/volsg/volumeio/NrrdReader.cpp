@@ -202,7 +202,7 @@ ref_ptr<VolumeGrid> readNrrd(const std::string& path, std::uint64_t byteLimit) {
 
     std::unique_ptr<InputFile> detached;
     if (!h.dataFile.empty())
-        detached = std::make_unique<InputFile>(InputFile::resolveBeside(path, h.dataFile));
+        detached = InputFile::openDataFile(path, h.dataFile);
     else if (!sawBlankLine)
         header->fail("NRRD header has no 'data file' field and no blank line before attached data");
     InputFile& data = detached ? *detached : *header;

@@ -112,9 +112,12 @@ public:
             // Out of input with room left for output: the stream was cut off.
             if (stream_.avail_in == 0 && inputLeft_ == 0 &&
                 (stream_.avail_out > 0 || rc == Z_BUF_ERROR))
-                file_.fail("truncated " + name_ + " stream: it ends after " +
-                           std::to_string(produced) + " of the expected " +
-                           std::to_string(expected) + " decompressed bytes");
+                file_.fail("truncated " + name_ + " stream: " +
+                           (produced == expected
+                                ? std::string("it ends before its end marker and checksum")
+                                : "it ends after " + std::to_string(produced) +
+                                      " of the expected " + std::to_string(expected) +
+                                      " decompressed bytes"));
         }
         if (produced != expected)
             file_.fail("decompressed " + name_ + " data has " + std::to_string(produced) +

@@ -1,0 +1,73 @@
+#pragma once
+// The declared maxima of every reader: one place to see (and change) how much untrusted input
+// may make the library allocate, nest or count. Past a limit a reader throws volsg::Error
+// naming the file, the place and the limit; it never allocates first and fails with
+// std::bad_alloc, and never recurses without bound.
+
+#include <cstddef>
+#include <cstdint>
+
+#include <unistd.h>
+
+namespace volsg::limits {
+
+// --- Scene files (io/SceneReader, io/Tokenizer, fields) ---
+
+/// Largest scene file readScene() loads.
+inline constexpr std::uintmax_t maxSceneFileSize = std::uintmax_t(1) << 30;
+/// Deepest nesting of nodes (children and SFNode/MFNode values each count one level).
+inline constexpr int maxSceneNestingDepth = 1000;
+/// Most nodes one scene file may create (USE does not count: it shares a node).
+inline constexpr std::size_t maxSceneNodes = std::size_t(1) << 22;
+/// Most children of one node.
+inline constexpr std::size_t maxSceneChildren = std::size_t(1) << 20;
+/// Most values in one multiple-value field (MFFloat, MFVec3f, MFNode, ...).
+inline constexpr std::size_t maxFieldValues = std::size_t(1) << 24;
+/// Most fields an unknown node type may declare in its `fields [ ... ]` description.
+inline constexpr std::size_t maxDeclaredFields = 1024;
+/// Longest word (names and numbers).
+inline constexpr std::size_t maxWordLength = std::size_t(1) << 20;
+/// Longest quoted string, after unescaping.
+inline constexpr std::size_t maxStringLength = std::size_t(64) << 20;
+
+// --- Volume files (volumeio, volume::VolumeGrid) ---
+
+/// Largest number of voxels along one axis of any volume (file, generator or GL upload).
+inline constexpr int maxVolumeDimension = 1 << 16;
+/// Largest voxel storage a grid may take unless the caller allows more (a bad header must give
+/// an Error, not an out-of-memory kill). Also capped by physicalMemoryBytes().
+inline constexpr std::uint64_t maxVolumeBytes = std::uint64_t(4) << 30;
+/// Longest header line of a NRRD or MetaImage file.
+inline constexpr std::size_t maxHeaderLineLength = std::size_t(64) << 10;
+/// Longest NRRD or MetaImage header.
+inline constexpr std::size_t maxHeaderLength = std::size_t(1) << 20;
+
+// --- glTF (gltf/GltfLoader) ---
+
+/// Largest .gltf/.glb file, and largest external buffer or image file it names.
+inline constexpr std::uintmax_t maxGltfFileSize = std::uintmax_t(1) << 30;
+/// Deepest glTF node tree.
+inline constexpr int maxGltfNodeDepth = 256;
+/// Most elements an accessor without a bufferView (all zeros, sparse values only) may have.
+inline constexpr std::size_t maxGltfUnbackedCount = std::size_t(1) << 24;
+
+// --- Images (image/Image: PNG, PFM; glTF textures) ---
+
+/// Longest side of an image.
+inline constexpr std::uint32_t maxImageSide = std::uint32_t(1) << 16;
+/// Largest PNG or PFM file read.
+inline constexpr std::uintmax_t maxImageFileSize = std::uintmax_t(1) << 30;
+/// Most pixels of an image.
+inline constexpr std::uint64_t maxImagePixels = std::uint64_t(1) << 28;
+
+/// Bytes of physical memory of this machine (0 when unknown). A volume larger than this is
+/// refused before allocation whatever limit the caller passed: it could only end in swapping
+/// or the out-of-memory killer.
+inline std::uint64_t physicalMemoryBytes() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES);
+    const long pageSize = ::sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || pageSize <= 0) return 0;
+    return std::uint64_t(pages) * std::uint64_t(pageSize);
+}
+
+} // namespace volsg::limits

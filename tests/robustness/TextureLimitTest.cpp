@@ -1,0 +1,71 @@
+// A volume larger than GL_MAX_3D_TEXTURE_SIZE is bricked, never truncated. The GL here allows
+// 2048, so the test lowers the limit through the slicer's hook (VOLSG_MAX_3D_TEXTURE_SIZE) to
+// 8 texels and checks that the bricks obey it and the image still matches the reference ray
+// caster (which samples the whole grid in double precision).
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+
+#include "slicing/SlicingTestSupport.h"
+
+using namespace volsg;
+using namespace volsg::test;
+
+namespace {
+
+constexpr double k8Bit = 1.0 / 255.0;
+
+double shell(const glm::dvec3& p) {
+    const double r = glm::length(p);
+    return std::clamp(1.0 - 4.0 * std::abs(r - 0.6), 0.0, 1.0) * (0.6 + 0.4 * p.x * p.x);
+}
+
+/// Sets an environment variable for its lifetime.
+class ScopedEnvironment {
+public:
+    ScopedEnvironment(const char* name, const char* value) : name_(name) {
+        ::setenv(name, value, 1);
+    }
+    ~ScopedEnvironment() { ::unsetenv(name_); }
+
+private:
+    const char* name_;
+};
+
+} // namespace
+
+TEST_CASE("a volume beyond the 3D texture size limit is bricked and matches the reference") {
+    OSMesaContext context;
+    RayCastVolume volume;
+    volume.data = makeGrid({30, 20, 12}, VoxelType::UByte, glm::dvec3(1.0), shell);
+    volume.transferFunctions[-1] = transferFunction({{0.1, 0}, {0.8, 0.8}}, {{0, 0.2}, {1, 1}});
+    auto camera = framing(*volume.data, {0.4f, 0.6f, 1.0f});
+
+    Comparison whole, limited;
+    {
+        Renderer renderer;
+        whole = compareGrid(renderer, volume, SlicingSettings{}, *camera, 64);
+    }
+    {
+        const ScopedEnvironment limit("VOLSG_MAX_3D_TEXTURE_SIZE", "8");
+        Renderer renderer; // a new cache: the limit is read once per cache
+        limited = compareGrid(renderer, volume, SlicingSettings{}, *camera, 64);
+    }
+    MESSAGE("bricks " << limited.stats.brickGrid.x << "x" << limited.stats.brickGrid.y << "x"
+                      << limited.stats.brickGrid.z << ", largest texture "
+                      << limited.stats.brickTexels.x << "x" << limited.stats.brickTexels.y << "x"
+                      << limited.stats.brickTexels.z << ", rmse to the reference "
+                      << limited.difference.rmse * 255 << "/255");
+    CHECK(whole.stats.bricksTotal == 1);
+    // 30 voxels along x in textures of at most 8 texels (bricks share a seam layer): >= 5.
+    CHECK(limited.stats.brickGrid.x >= 5);
+    CHECK(limited.stats.brickGrid.y >= 3);
+    CHECK(limited.stats.brickGrid.z >= 2);
+    CHECK(limited.stats.brickTexels.x <= 8);
+    CHECK(limited.stats.brickTexels.y <= 8);
+    CHECK(limited.stats.brickTexels.z <= 8);
+    // Nothing was cut off: the bricked image is as close to the reference as the whole one.
+    CHECK(limited.difference.rmse < 0.5 * k8Bit);
+    CHECK(limited.difference.rmse < whole.difference.rmse + 0.1 * k8Bit);
+    CHECK(limited.difference.max < 8.0 * k8Bit);
+}
