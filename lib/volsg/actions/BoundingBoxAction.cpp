@@ -1,4 +1,5 @@
 #include <volsg/actions/BoundingBoxAction.h>
+#include <volsg/nodes/Separator.h>
 
 namespace volsg {
 
@@ -19,7 +20,17 @@ void BoundingBoxAction::beginTraversal(Node& root) {
 }
 
 void BoundingBoxAction::dispatch(Node& node) {
+    if (!node.isA<Separator>()) {
+        node.getBoundingBox(*this);
+        return;
+    }
+    // A Separator's children start from an empty box and the box from before it is added back
+    // after them, so emptyBoxInScope() inside it forgets only what its own children added.
+    Box3 before = box_;
+    box_ = Box3{};
     node.getBoundingBox(*this);
+    before.extendBy(box_);
+    box_ = before;
 }
 
 Box3 computeBoundingBox(Node& root) {

@@ -12,6 +12,10 @@ public:
     const Box3& boundingBox() const { return box_; }
     /// Adds a box given in the current node's local coordinates (uses the state's model matrix).
     void extendByLocal(const Box3& local);
+    /// Empties the box accumulated so far inside the innermost Separator being traversed (the
+    /// whole box outside any Separator): ResetTransform's BBOX, as Inventor's separators keep
+    /// the box from before them apart from their children's.
+    void emptyBoxInScope() { box_ = Box3{}; }
 
 protected:
     void beginTraversal(Node& root) override;

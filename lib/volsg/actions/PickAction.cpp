@@ -113,7 +113,7 @@ void PickAction::dispatch(Node& node) {
 }
 
 void PickAction::addLocalHit(const glm::dvec3& localPoint, const glm::dvec3& localNormal,
-                             std::size_t primitiveIndex) {
+                             std::size_t primitiveIndex, std::optional<PickedVoxel> voxel) {
     const glm::dmat4& model = state().modelMatrix();
     const glm::dvec3 point(model * glm::dvec4(localPoint, 1.0));
     const double distance = glm::dot(point - worldRay_.origin, worldRay_.direction);
@@ -132,7 +132,7 @@ void PickAction::addLocalHit(const glm::dvec3& localPoint, const glm::dvec3& loc
     const double length = glm::length(normal);
     normal = length > 0.0 ? normal / length : glm::dvec3(0.0);
 
-    picked_ = PickedPoint{point, normal, distance, path(), primitiveIndex};
+    picked_ = PickedPoint{point, normal, distance, path(), primitiveIndex, voxel};
 }
 
 } // namespace volsg

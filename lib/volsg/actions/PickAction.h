@@ -12,6 +12,14 @@ namespace volsg {
 
 class Camera;
 
+/// What a pick on a planar section (OrthoSlice, ObliqueSlice) found in its volume.
+struct PickedVoxel {
+    glm::ivec3 index{0};     ///< the nearest voxel (i, j, k): the one whose cell holds the point
+    double voxelValue = 0.0; ///< its raw data value
+    double value = 0.0;      ///< the value the slice shows there (trilinear or nearest)
+    int tag = -1;            ///< the voxel's tag, -1 without tags
+};
+
 /// What a pick found: the point and normal in world coordinates, the distance along the ray,
 /// the path to the shape, and which primitive (triangle) of its mesh.
 struct PickedPoint {
@@ -23,6 +31,7 @@ struct PickedPoint {
     double distance = 0.0; ///< along the world ray from its origin, in world units
     std::vector<Node*> path;
     std::size_t primitiveIndex = 0;
+    std::optional<PickedVoxel> voxel; ///< set by slices
 };
 
 /// Inventor's SoRayPickAction, nearest hit only. Shapes with triangle meshes are pickable;
@@ -49,9 +58,9 @@ public:
     const Ray& worldRay() const { return worldRay_; }
     /// Shapes report hits in the current node's local coordinates; the action converts them to
     /// world, keeps the nearest, and drops hits outside [near, far] or on the removed side of
-    /// any ClipPlane in scope.
+    /// any ClipPlane in scope. Slices pass the voxel they hit.
     void addLocalHit(const glm::dvec3& localPoint, const glm::dvec3& localNormal,
-                     std::size_t primitiveIndex);
+                     std::size_t primitiveIndex, std::optional<PickedVoxel> voxel = std::nullopt);
 
     const std::optional<PickedPoint>& picked() const { return picked_; }
 

@@ -1,5 +1,6 @@
 #include <volsg/core/Error.h>
 #include <volsg/gl/Shader.h>
+#include <volsg/nodes/LightModel.h>
 #include <volsg/nodes/Material.h>
 #include <volsg/nodes/Shape.h>
 #include <volsg/render/GpuMesh.h>
@@ -148,6 +149,12 @@ void ShapeRenderer::fill(RenderAction& action, const GpuMesh& gpu, DrawItem& ite
         item.alpha = 1.0f - kDefaultTransparency;
     }
     item.lit = gpu.mode == GL_TRIANGLES;
+    // Inventor's LightModel BASE_COLOR: unlit, the diffuse (or vertex) colour alone.
+    if (const LightModel* lightModel = state.nearestNode<LightModel>();
+        lightModel && lightModel->model() == LightModel::BASE_COLOR) {
+        item.lit = false;
+        item.emissive = glm::vec3(0.0f);
+    }
 
     if (item.lit) {
         action.lightsInScope(lightScratch_);

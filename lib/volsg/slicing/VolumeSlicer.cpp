@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <string>
@@ -21,6 +22,7 @@
 #include <volsg/render/RenderTarget.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
+#include <volsg/slicing/DataFormat.h>
 #include <volsg/slicing/PreIntegrationTable.h>
 #include <volsg/slicing/ProxyPlaneCutter.h>
 #include <volsg/slicing/SliceShaders.h>
@@ -211,34 +213,6 @@ struct BrickState {
     GLint faceFirst = 0; ///< this frame's front faces on the volume box (sliver rays)
     GLsizei faceCount = 0;
 };
-
-/// How the data type goes into a texture: data = scale * texel + offset.
-struct DataFormat {
-    GLenum internalFormat = GL_R16;
-    GLenum type = GL_UNSIGNED_BYTE;
-    std::size_t texelBytes = 2;
-    float scale = 255.0f;
-    float offset = 0.0f;
-};
-
-/// 8-bit data goes into R16 (the driver widens x to x * 257, exactly x / 255). Measured on
-/// llvmpipe, sampling between two voxels 100 and 101 at 256 positions: R8 returned values off
-/// by up to 0.498 data units (its filter rounds to 1/255 steps), R16 by 9e-6. R16 costs twice
-/// the memory and is what we use. Short data is shifted by 32768 into R16, which
-/// keeps all 65536 values (R16_SNORM merges -32768 with -32767, R16F keeps 11 bits).
-DataFormat dataFormatOf(VoxelType type) {
-    switch (type) {
-    case VoxelType::UByte:
-        return {GL_R16, GL_UNSIGNED_BYTE, 2, 255.0f, 0.0f};
-    case VoxelType::UShort:
-        return {GL_R16, GL_UNSIGNED_SHORT, 2, 65535.0f, 0.0f};
-    case VoxelType::Short:
-        return {GL_R16, GL_UNSIGNED_SHORT, 2, 65535.0f, -32768.0f};
-    case VoxelType::Float:
-        return {GL_R32F, GL_FLOAT, 4, 1.0f, 0.0f};
-    }
-    return {};
-}
 
 /// Per volume (node and grid): bricks, tables and geometry, kept across frames.
 struct VolumeTextures {
@@ -623,6 +597,9 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     SliceShared& shared = action.cache<SliceShared>(sharedCacheKey());
     if (shared.max3DTextureSize == 0) {
         glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &shared.max3DTextureSize);
+        // Test hook: bricking as a GL with a smaller limit would need it (tests/robustness).
+        if (const char* forced = std::getenv("VOLSG_MAX_3D_TEXTURE_SIZE"))
+            shared.max3DTextureSize = std::min(shared.max3DTextureSize, std::atoi(forced));
         shared.max3DTextureSize = std::max(shared.max3DTextureSize, 2);
     }
     // Keyed by the grids too: new data (a VolumeData reload) starts a fresh cache and the old

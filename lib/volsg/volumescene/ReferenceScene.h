@@ -37,6 +37,10 @@ RayCastCamera referenceCamera(Node& root, const RenderOptions& options);
 /// The reference image of a scene: opaque geometry from the GL renderer (colour and depth,
 /// volumes left out), then the volumes by ReferenceRayCaster over it, on referenceCamera().
 /// Transparent geometry is NOT included (a documented limitation: compare scenes without it).
+/// Planar sections with ALPHA_OPAQUE or ALPHA_BINARY are opaque geometry, so they are in it
+/// (GL-drawn, ending the rays at their depth; their own colour is checked against SliceSampler,
+/// lib/volsg/sections/README.md); ALPHA_AS_IS sections, being transparent, are not. A clipping
+/// OrthoSlice clips the volumes here as in GL (it puts a ClipPlane in scope).
 /// Needs a current GL context. `details` receives the caster's result (error bound, ...).
 Image renderReference(Node& root, const RenderOptions& options, RayCastResult* details = nullptr,
                       const RayCastOptions& rayOptions = {});

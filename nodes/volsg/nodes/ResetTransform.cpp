@@ -1,0 +1,19 @@
+// ResetTransform: Inventor's SoResetTransform.
+#include <volsg/nodes/ResetTransform.h>
+
+#include <volsg/actions/BoundingBoxAction.h>
+
+namespace volsg {
+
+const EnumValues ResetTransform::whatToResetNames{{"TRANSFORM", TRANSFORM}, {"BBOX", BBOX}};
+
+void ResetTransform::doAction(Action& action) {
+    if (whatToReset() & TRANSFORM) action.state().setModelMatrix(glm::dmat4(1.0));
+}
+
+void ResetTransform::getBoundingBox(BoundingBoxAction& action) {
+    if (whatToReset() & BBOX) action.emptyBoxInScope();
+    doAction(action);
+}
+
+} // namespace volsg
