@@ -192,6 +192,34 @@ RenderList& VoxelObject::renderList(int axis) {
     return *list;
 }
 
+VoxelObject::Arrays VoxelObject::arrays() const {
+    return {dimensions_, spacing_, maxMagnitude_, i_, j_, k_, value12_, gradientCode_, magnitude8_};
+}
+
+ref_ptr<VoxelObject> VoxelObject::fromArrays(Arrays a) {
+    const std::size_t n = a.i.size();
+    if (a.j.size() != n || a.k.size() != n || a.value12.size() != n || a.gradientCode.size() != n ||
+        a.magnitude8.size() != n)
+        throw Error("voxel object arrays differ in length");
+    for (int axis = 0; axis < 3; ++axis)
+        if (a.dimensions[axis] < 1 || a.dimensions[axis] > 65536)
+            throw Error("voxel object dimensions must be 1..65536 each");
+    for (std::size_t v = 0; v < n; ++v)
+        if (a.i[v] >= a.dimensions.x || a.j[v] >= a.dimensions.y || a.k[v] >= a.dimensions.z)
+            throw Error("voxel object position outside its dimensions");
+    ref_ptr<VoxelObject> object(new VoxelObject);
+    object->dimensions_ = a.dimensions;
+    object->spacing_ = a.spacing;
+    object->maxMagnitude_ = a.maxMagnitude;
+    object->i_ = std::move(a.i);
+    object->j_ = std::move(a.j);
+    object->k_ = std::move(a.k);
+    object->value12_ = std::move(a.value12);
+    object->gradientCode_ = std::move(a.gradientCode);
+    object->magnitude8_ = std::move(a.magnitude8);
+    return object;
+}
+
 std::size_t VoxelObject::memoryBytes() const {
     std::lock_guard lock(buildMutex_);
     std::size_t bytes = i_.size() * (3 * sizeof(std::uint16_t) + 2 * sizeof(std::uint16_t) + 1);

@@ -68,6 +68,19 @@ public:
     /// Extracted voxels plus every RenderList built so far.
     std::size_t memoryBytes() const;
 
+    /// The extracted arrays without RenderLists: what it takes to store an object outside the
+    /// process (the series' disk cache) and rebuild it bit for bit with fromArrays().
+    struct Arrays {
+        glm::ivec3 dimensions{0};
+        glm::dvec3 spacing{1.0};
+        double maxMagnitude = 0.0;
+        std::vector<std::uint16_t> i, j, k, value12, gradientCode;
+        std::vector<std::uint8_t> magnitude8;
+    };
+    Arrays arrays() const;
+    /// Throws Error when the arrays differ in length or a position lies outside dimensions.
+    static ref_ptr<VoxelObject> fromArrays(Arrays arrays);
+
 protected:
     ~VoxelObject() override = default;
 

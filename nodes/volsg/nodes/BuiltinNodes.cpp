@@ -12,9 +12,13 @@
 #include <volsg/nodes/IndexedFaceSet.h>
 #include <volsg/nodes/IndexedLineSet.h>
 #include <volsg/nodes/Light.h>
+#include <volsg/nodes/LightModel.h>
 #include <volsg/nodes/Material.h>
 #include <volsg/nodes/MatrixTransform.h>
 #include <volsg/nodes/Normal.h>
+#include <volsg/nodes/ObliqueSlice.h>
+#include <volsg/nodes/OrthoSlice.h>
+#include <volsg/nodes/ResetTransform.h>
 #include <volsg/nodes/Separator.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
@@ -24,6 +28,7 @@
 #include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeObject.h>
+#include <volsg/nodes/VolumeSeries.h>
 
 namespace volsg {
 
@@ -48,12 +53,17 @@ void registerBuiltinNodeTypes(NodeRegistry& r) {
     r.add(IndexedLineSet::classType());
     r.add(ClipPlane::classType());
     r.add(VolumeData::classType());
+    r.add(VolumeSeries::classType());
     r.add(TransferFunction::classType());
     r.add(BoxClip::classType());
     r.add(Volume::classType());
     r.add(ShearWarpVolume::classType());
     r.add(VolumeObject::classType());
     r.add(GltfModel::classType());
+    r.add(LightModel::classType());
+    r.add(ResetTransform::classType());
+    r.add(OrthoSlice::classType());
+    r.add(ObliqueSlice::classType());
 }
 
 } // namespace volsg

@@ -12,16 +12,19 @@
 #include <volsg/gl/Shader.h>
 #include <volsg/gl/Texture.h>
 #include <volsg/gl/VertexArray.h>
+#include <volsg/io/ReadContext.h>
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeObject.h>
+#include <volsg/nodes/VolumeSeries.h>
 #include <volsg/reference/ReferenceRayCaster.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/RenderTarget.h>
 #include <volsg/shearwarp/VoxelListOptimizer.h>
 #include <volsg/volume/VolumeGrid.h>
+#include <volsg/voxelfile/PackedVolume.h>
 
 namespace volsg {
 
@@ -138,11 +141,17 @@ std::vector<ShearWarpObject> ShearWarpVolume::gatherObjects(const State& state,
                                                             std::vector<VolumeObject*>* sources) {
     std::vector<ShearWarpObject> out;
     if (sources) sources->clear();
-    const VolumeData* data = state.nearestNode<VolumeData>();
-    if (!data) return out;
-    const ref_ptr<const VolumeGrid> grid = data->grid();
-    if (!grid) return out;
-    const ref_ptr<const VolumeGrid> tags = data->tagGrid();
+    // A voxelFile replaces the VolumeData: its stored objects stand for the extraction.
+    std::optional<PackedVolume> packed;
+    if (!voxelFile().empty()) packed = PackedVolume::load(voxelFile(), directory_);
+    const VolumeData* data = packed ? nullptr : state.nearestNode<VolumeData>();
+    if (!data && !packed) return out;
+    // A series hands out each step's lists from its step cache (which reads the grids).
+    const VolumeSeries* series =
+        data && data->isA<VolumeSeries>() ? static_cast<const VolumeSeries*>(data) : nullptr;
+    const ref_ptr<const VolumeGrid> grid = data && !series ? data->grid() : nullptr;
+    if (!grid && !packed && !series) return out;
+    const ref_ptr<const VolumeGrid> tags = data && !series ? data->tagGrid() : nullptr;
     const glm::dmat4 model = state.modelMatrix();
     const glm::dmat4 worldToLocal = glm::inverse(model);
 
@@ -171,7 +180,9 @@ std::vector<ShearWarpObject> ShearWarpVolume::gatherObjects(const State& state,
                                  std::uint64_t(reinterpret_cast<std::uintptr_t>(scope.transfer)));
             transferKey = mixKey(transferKey, scope.transfer->version());
         }
-        o.object = vo.voxelObject(*grid, tags.get(), o.transferFunction, transferKey);
+        o.object = packed   ? packed->voxels(out.size(), vo.extractionSpec(o.transferFunction))
+                   : series ? series->voxelObject(vo.extractionSpec(o.transferFunction))
+                            : vo.voxelObject(*grid, tags.get(), o.transferFunction, transferKey);
         o.compositing = vo.compositing() == VolumeObject::MIP           ? ObjectCompositing::MIP
                         : vo.compositing() == VolumeObject::SURFACE_HIT ? ObjectCompositing::Surface
                                                                         : ObjectCompositing::DVR;
@@ -204,6 +215,7 @@ std::vector<ShearWarpObject> ShearWarpVolume::gatherObjects(const State& state,
         out.push_back(std::move(o));
         if (sources) sources->push_back(&vo);
     }
+    if (packed) packed->checkObjectCount(out.size());
     return out;
 }
 
@@ -295,6 +307,9 @@ void ShearWarpVolume::render(RenderAction& action) {
     for (const ShearWarpObject& o : objects)
         lastObjects_.push_back(o.object);
     lastModel_ = action.state().modelMatrix();
+    if (const VolumeData* data = action.state().nearestNode<VolumeData>();
+        data && data->isA<VolumeSeries>()) // prefetched steps get this view's RenderList
+        static_cast<const VolumeSeries*>(data)->setViewAxis(lastFrame_->stats.principalAxis);
     if (optimize()) {
         std::vector<std::pair<ref_ptr<VoxelObject>, int>> lists;
         for (const ShearWarpObject& o : objects)
@@ -366,7 +381,15 @@ void ShearWarpVolume::waitForOptimizer() {
     if (optimizer_) optimizer_->waitUntilIdle();
 }
 
+void ShearWarpVolume::readDone(const ReadContext& context) {
+    directory_ = context.directory;
+}
+
 void ShearWarpVolume::getBoundingBox(BoundingBoxAction& action) {
+    if (!voxelFile().empty()) {
+        PackedVolume::load(voxelFile(), directory_).extendBoundingBox(action);
+        return;
+    }
     if (const VolumeData* data = action.state().nearestNode<VolumeData>())
         data->extendBoundingBox(action);
 }

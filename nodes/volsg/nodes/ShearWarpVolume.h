@@ -26,6 +26,9 @@ public:
     SFEnum interObjectCompositing{this, "interObjectCompositing", interObjectNames, DVR};
     SFBool optimize{this, "optimize", true}; ///< run the idle-time optimizer
     SFInt32 threads{this, "threads", 0};     ///< 0: every core
+    /// A compact voxel-list file (.vsgv, lib/volsg/voxelfile/README.md), "path" or "path#k"
+    /// for its volume k: the objects' voxels come from it instead of the VolumeData in scope.
+    SFString voxelFile{this, "voxelFile", ""};
 
     /// The objects as the engine takes them, from the state at this node (VolumeData,
     /// TransferFunctions, BoxClip, ClipPlanes above it) and the state nodes among the
@@ -60,6 +63,7 @@ public:
     void doAction(Action& action) override;
     void render(RenderAction& action) override;
     void getBoundingBox(BoundingBoxAction& action) override;
+    void readDone(const ReadContext& context) override;
 
     ShearWarpVolume();
 
@@ -73,6 +77,7 @@ private:
     std::vector<VolumeObject*> lastSources_;
     std::vector<ref_ptr<VoxelObject>> lastObjects_;
     glm::dmat4 lastModel_{1.0};
+    std::string directory_; ///< of the scene file: a relative voxelFile resolves against it
 };
 
 } // namespace volsg

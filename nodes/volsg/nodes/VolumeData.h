@@ -50,12 +50,13 @@ public:
     /// The voxels, loaded on first use and again after a field changes (relative file names
     /// resolve against the folder of the scene file, see readDone). Throws Error naming the
     /// file and the problem. Not thread-safe: call from one thread at a time.
-    ref_ptr<const VolumeGrid> grid() const;
+    /// Virtual: a VolumeSeries (a VolumeData) answers with its current time step.
+    virtual ref_ptr<const VolumeGrid> grid() const;
     /// Extends the action's box by the volume box (centred on the local origin, dimensions *
     /// spacing); loads the data as grid() does.
-    void extendBoundingBox(BoundingBoxAction& action) const;
+    virtual void extendBoundingBox(BoundingBoxAction& action) const;
     /// The label volume, or null without tagFileName (or a generator without labels).
-    ref_ptr<const VolumeGrid> tagGrid() const;
+    virtual ref_ptr<const VolumeGrid> tagGrid() const;
 
     void readDone(const ReadContext& context) override;
     void doAction(Action& action) override;

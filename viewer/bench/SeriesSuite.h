@@ -1,0 +1,28 @@
+#pragma once
+// `volsg-bench --suite series`: playing a generated time series through the step cache
+// (lib/volsg/series) with a memory budget smaller than the series.
+
+#include <volsg/context/Context.h>
+
+namespace volsg::bench {
+
+struct SeriesSuiteSettings {
+    int side = 256;  ///< MOVING_SPHERE volumes side^3
+    int steps = 100; ///< time steps
+    int width = 256, height = 256;
+    double budgetMegabytes = 0; ///< cache budget; 0: about a quarter of the series' lists
+    double playPeriodMs = 100;  ///< a played frame lasts at least this long (10 steps/s)
+    int prefetch = 2;
+    Backend backend = Backend::OSMesa;
+};
+
+/// Prints: the cold-step latency (first view of a step nobody prepared, jumping while
+/// paused), per-frame times (median, 95th percentile, max) of a first and a second
+/// play-through at the play period and of a third as fast as frames go, the longest stall on
+/// cached steps (largest frame of the second and third passes minus their median, and whether
+/// it stays below one median frame), cache traffic (extractions, spills,
+/// disk reads, waits), and the memory high-water mark of the voxel lists against the budget
+/// (plus grids and the process's peak RSS). Returns 0.
+int runSeriesSuite(const SeriesSuiteSettings& settings);
+
+} // namespace volsg::bench
