@@ -12,12 +12,14 @@
 
 #include "CommandLine.h"
 #include "bench/BenchRow.h"
+#include "bench/CompactSuite.h"
 #include "bench/ImageError.h"
 #include "bench/NodeSuite.h"
 #include "bench/OrbitCamera.h"
 #include "bench/ReferenceViews.h"
 #include "bench/RtvrSuite.h"
 #include "bench/SceneGenerators.h"
+#include "bench/SeriesSuite.h"
 #include "bench/Timing.h"
 #include "bench/VolumeSuite.h"
 #include <volsg/actions/BoundingBoxAction.h>
@@ -35,6 +37,10 @@ const char* usage =
     "                   [--error [--error-frames K]] [--csv FILE] [--plot FILE.svg]\n"
     "       volsg-bench --suite parse|traversal|all [--nodes N] [--side S] [--frames N]\n"
     "                   [--keep DIR]\n"
+    "       volsg-bench --suite series [--size WxH] [--frames STEPS] [--volume-side N]\n"
+    "                   [--budget MB]   (a 100-step series of 256^3 volumes by default)\n"
+    "       volsg-bench --suite compact [--frames REPEATS] [--keep DIR]   (.vsgv of the RTVR\n"
+    "                   scenes: bytes per voxel, write and load ms)\n"
     "       volsg-bench --suite volumes [--size WxH] [--frames N] [--error-frames K]\n"
     "                   [--volume-side N] [--csv FILE] [--plot FILE.svg] [--keep DIR]\n"
     "       volsg-bench --suite node [--size WxH] [--frames N] [--error-frames K]\n"
@@ -74,6 +80,8 @@ struct Settings {
     int nodes = 100000;
     int side = 100;
     int volumeSide = 64;
+    bool volumeSideGiven = false;
+    double budgetMegabytes = 0.0; ///< --suite series: the step cache's budget (0: its default)
     bool error = false;
     int errorFrames = 4;
     bool errorFramesGiven = false;
@@ -330,8 +338,11 @@ int run(int argc, char** argv) {
             st.csv = args.value(a);
         else if (a == "--plot")
             st.plot = args.value(a);
-        else if (a == "--volume-side")
+        else if (a == "--volume-side") {
             st.volumeSide = args.intValue(a, 2, 1024);
+            st.volumeSideGiven = true;
+        } else if (a == "--budget")
+            st.budgetMegabytes = parsePositive(args.value(a), "--budget");
         else if (a == "--background")
             st.options.background = cli::parseColor(args.value(a));
         else if (a == "--backend")
@@ -382,6 +393,24 @@ int run(int argc, char** argv) {
         return 0;
     }
     if (st.suite == "node") return nodeSuite(st);
+    if (st.suite == "compact") { // .vsgv sizes and times (lib/volsg/voxelfile)
+        bench::CompactSuiteSettings cs;
+        if (st.framesGiven) cs.repeats = st.frames;
+        cs.keepDir = st.keepDir;
+        return bench::runCompactSuite(cs);
+    }
+    if (st.suite == "series") { // time series through the step cache (lib/volsg/series)
+        bench::SeriesSuiteSettings ss;
+        if (st.sizeGiven) {
+            ss.width = st.options.width;
+            ss.height = st.options.height;
+        }
+        if (st.framesGiven) ss.steps = st.frames;
+        if (st.volumeSideGiven) ss.side = st.volumeSide;
+        ss.budgetMegabytes = st.budgetMegabytes;
+        ss.backend = st.backend;
+        return bench::runSeriesSuite(ss);
+    }
     if (st.suite == "rtvr") // exit code 1 when no row was measured
         return bench::runRtvrSuite(
                    {st.options.width, st.options.height, st.frames, st.backend, st.keepDir, {}})
@@ -389,7 +418,8 @@ int run(int argc, char** argv) {
     if (st.suite == "parse" || st.suite == "all") parseSuite(st);
     if (st.suite == "traversal" || st.suite == "all") traversalSuite(st);
     if (st.suite != "parse" && st.suite != "traversal" && st.suite != "all")
-        throw Error("unknown suite '" + st.suite + "' (parse, traversal, volumes, node, all)");
+        throw Error("unknown suite '" + st.suite +
+                    "' (parse, traversal, volumes, node, rtvr, series, all)");
     return 0;
 }
 

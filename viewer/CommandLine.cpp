@@ -62,6 +62,15 @@ glm::vec3 parseColor(const std::string& text) {
     return c;
 }
 
+double parseFraction(const std::string& text, std::string_view option) {
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(v > 0.0) || !(v <= 1.0))
+        throw Error("option " + std::string(option) + " expects a number in (0, 1], not '" + text +
+                    "'");
+    return v;
+}
+
 std::string extensionOf(const std::string& path) {
     const auto slash = path.find_last_of('/');
     const auto dot = path.find_last_of('.');

@@ -25,8 +25,10 @@ private:
     std::size_t next_ = 0;
 };
 
-glm::ivec2 parseSize(const std::string& text);    ///< "WxH"
-glm::vec3 parseColor(const std::string& text);    ///< "R,G,B" in [0,1]
+glm::ivec2 parseSize(const std::string& text); ///< "WxH"
+glm::vec3 parseColor(const std::string& text); ///< "R,G,B" in [0,1]
+/// A number in (0, 1] for `option` (the stereo eye separation as a fraction of focalDistance).
+double parseFraction(const std::string& text, std::string_view option);
 std::string extensionOf(const std::string& path); ///< lower case, with the dot
 
 } // namespace volsg::cli

@@ -10,16 +10,24 @@
 #include <volsg/io/SceneReader.h>
 #include <volsg/io/SceneWriter.h>
 #include <volsg/render/Renderer.h>
+#include <volsg/render/StereoRenderer.h>
 #include <volsg/volumescene/ReferenceScene.h>
+#include <volsg/voxelfile/VoxelFileScene.h>
 
 namespace {
 
 const char* usage =
     "usage: volsg-render SCENE -o OUT.png|OUT.pfm|OUT.iv [--size WxH] [--backend osmesa|egl]\n"
+    "  (SCENE: a scene file or a .vsgv voxel-list file written by volsg-pack)\n"
     "                    [--background R,G,B] [--reference [--tolerance T]]\n"
+    "                    [--stereo anaglyph|side-by-side [--eye-separation F]]\n"
     "  --reference   render the volumes with the CPU reference ray caster (SCENE-FORMAT.md\n"
     "                section 4) over GL's opaque geometry; prints the error bound reached\n"
-    "  --tolerance   the reference's per-pixel convergence tolerance (default 1e-4)\n";
+    "  --tolerance   the reference's per-pixel convergence tolerance (default 1e-4)\n"
+    "  --stereo      a stereo pair of the scene camera: red-cyan anaglyph (red = left eye) or\n"
+    "                the two eyes side by side (left eye left, each half the width), zero\n"
+    "                parallax at the camera's focalDistance\n"
+    "  --eye-separation  the eye separation as a fraction of focalDistance (default 1/30)\n";
 
 double parseTolerance(const std::string& text) {
     char* end = nullptr;
@@ -36,6 +44,8 @@ int run(int argc, char** argv) {
     volsg::Backend backend = volsg::Backend::OSMesa;
     bool reference = false;
     volsg::RayCastOptions rayOptions;
+    volsg::StereoOptions stereo;
+    stereo.mode = volsg::StereoMode::Off;
     while (!args.empty()) {
         const std::string a = args.take();
         if (a == "-o" || a == "--output")
@@ -52,6 +62,10 @@ int run(int argc, char** argv) {
             reference = true;
         else if (a == "--tolerance")
             rayOptions.tolerance = parseTolerance(args.value(a));
+        else if (a == "--stereo")
+            stereo.mode = volsg::parseStereoMode(args.value(a));
+        else if (a == "--eye-separation")
+            stereo.separationFraction = volsg::cli::parseFraction(args.value(a), a);
         else if (a == "-h" || a == "--help") {
             std::fputs(usage, stdout);
             return 0;
@@ -70,12 +84,15 @@ int run(int argc, char** argv) {
     if (ext != ".png" && ext != ".pfm" && ext != ".iv")
         throw volsg::Error("output '" + output + "' must end in .png, .pfm or .iv");
 
-    volsg::ref_ptr<volsg::Node> root = volsg::readScene(scene);
+    // A .vsgv (volsg-pack) opens as its stored scene.
+    volsg::ref_ptr<volsg::Node> root = volsg::readSceneOrVoxelFile(scene);
     if (ext == ".iv") {
         volsg::writeSceneToFile(output, *root);
         return 0;
     }
     auto context = volsg::Context::createOffscreen(backend);
+    if (reference && stereo.mode != volsg::StereoMode::Off)
+        throw volsg::Error("--reference and --stereo cannot be combined");
     if (reference) {
         volsg::RayCastResult details;
         volsg::writeImage(output, volsg::renderReference(*root, options, &details, rayOptions));
@@ -86,7 +103,7 @@ int run(int argc, char** argv) {
         return 0;
     }
     volsg::Renderer renderer;
-    volsg::writeImage(output, renderer.render(*root, options));
+    volsg::writeImage(output, volsg::renderStereo(renderer, *root, options, stereo));
     return 0;
 }
 

@@ -12,7 +12,8 @@ namespace {
 
 const char* usage =
     "usage: volsg-view SCENE [--script FILE] [--size WxH] [--background R,G,B] [--antialias]\n"
-    "                  [--no-panels]\n"
+    "                  [--no-panels] [--layout single|four] [--navigation examiner|fly|walk]\n"
+    "                  [--stereo off|anaglyph|side-by-side] [--eye-separation F]\n"
     "  mouse: left drag rotate, middle or shift+left pan, right or alt+left dolly, wheel dolly,\n"
     "         ctrl+wheel zoom (view angle),\n"
     "         click select, ctrl+left drag on an object: opacity (up/down) and contrast\n"
@@ -20,7 +21,12 @@ const char* usage =
     "  keys:  v view all, h home, o perspective/orthographic, a antialiasing, s seek (then\n"
     "         click), m manipulator on the selected ClipPlane/BoxClip/Transform, ctrl+s save,\n"
     "         p screenshot, z/x zoom in/out, ctrl+z undo, ctrl+y redo, F1 panels, escape\n"
-    "         deselect, q quit\n"
+    "         deselect, q quit, l single/four views, e f w examiner/fly/walk, t stereo\n"
+    "         (off, anaglyph, side-by-side)\n"
+    "  fly:   the mouse steers, left click faster, middle/right click slower\n"
+    "  walk:  hold left: up/down walks, left/right turns; middle drag looks up/down\n"
+    "  four views: click a section view to move the cursor (and the planes) there, wheel\n"
+    "         steps its plane\n"
     "  The scene reloads when its file changes.\n";
 
 int run(int argc, char** argv) {
@@ -40,6 +46,14 @@ int run(int argc, char** argv) {
             options.antialias = true;
         else if (a == "--no-panels")
             options.panels = false;
+        else if (a == "--layout")
+            options.layout = volsg::parseViewLayout(args.value(a));
+        else if (a == "--navigation")
+            options.navigation = volsg::parseNavigationMode(args.value(a));
+        else if (a == "--stereo")
+            options.stereo.mode = volsg::parseStereoMode(args.value(a));
+        else if (a == "--eye-separation")
+            options.stereo.separationFraction = volsg::cli::parseFraction(args.value(a), a);
         else if (a == "-h" || a == "--help") {
             std::fputs(usage, stdout);
             return 0;

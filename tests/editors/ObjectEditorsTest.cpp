@@ -88,10 +88,10 @@ TEST_CASE("the field panel lists every field with its widget and sets values fro
     REQUIRE(panel.entries().size() == volume->fieldCount());
     CHECK(panel.entries()[0].kind == FieldPanelModel::Kind::Enum); // renderMode
     CHECK(panel.entries()[1].kind == FieldPanelModel::Kind::Int);  // numPlanes
-    CHECK(panel.entries()[4].kind == FieldPanelModel::Kind::Bool); // preIntegrated
-    CHECK(panel.entries()[6].kind == FieldPanelModel::Kind::Text); // planeOpacity (MFVec2f)
+    CHECK(panel.entries()[5].kind == FieldPanelModel::Kind::Bool); // preIntegrated
+    CHECK(panel.entries()[7].kind == FieldPanelModel::Kind::Text); // planeOpacity (MFVec2f)
     std::string error;
-    CHECK(panel.setText(6, "[ 0 0.5, 1 2 ]", &error));
+    CHECK(panel.setText(7, "[ 0 0.5, 1 2 ]", &error));
     CHECK(volume->planeOpacity.getValues() == std::vector<glm::vec2>{{0, 0.5f}, {1, 2}});
     CHECK_FALSE(panel.setText(1, "many", &error));
     CHECK(error.find("numPlanes") != std::string::npos);

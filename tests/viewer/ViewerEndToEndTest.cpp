@@ -19,36 +19,12 @@
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/TransferFunction.h>
 
+#include "ViewerTestSupport.h"
+
 using namespace volsg;
 namespace fs = std::filesystem;
 
 namespace {
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool addressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool addressSanitizer = true;
-#else
-constexpr bool addressSanitizer = false;
-#endif
-#else
-constexpr bool addressSanitizer = false;
-#endif
-
-/// What the viewer's command line needs in front under AddressSanitizer. GLX loads Mesa's
-/// driver with dlopen and unloads it at exit, before LeakSanitizer looks: the driver's own
-/// allocations then have no module name, so tests/support/lsan.supp cannot name them. Preloaded,
-/// the driver stays loaded and its suppression applies (the viewer's own leaks still count).
-std::string sanitizerEnvironment() {
-    const char* driver = "/usr/lib/x86_64-linux-gnu/dri/swrast_dri.so";
-    if (!addressSanitizer || !fs::exists(driver)) return {};
-    return std::string("ASAN_OPTIONS=verify_asan_link_order=0 LD_PRELOAD=") + driver + " ";
-}
-
-bool haveXvfbRun() {
-    return std::system("command -v xvfb-run > /dev/null 2>&1") == 0;
-}
 
 double distanceFromBackground(const Image& image, int rowsFrom, int rowsTo) {
     const glm::vec3 background = glm::vec3(26.0f, 26.0f, 31.0f) / 255.0f; // 0.1 0.1 0.12 in 8 bits
@@ -59,15 +35,6 @@ double distanceFromBackground(const Image& image, int rowsFrom, int rowsTo) {
             sum += std::abs(d.r) + std::abs(d.g) + std::abs(d.b);
         }
     return sum;
-}
-
-int changedPixels(const Image& a, const Image& b, float threshold) {
-    int count = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        const glm::vec4 d = glm::abs(a.pixels[i] - b.pixels[i]);
-        if (std::max(d.r, std::max(d.g, d.b)) > threshold) ++count;
-    }
-    return count;
 }
 
 } // namespace
@@ -81,8 +48,7 @@ TEST_CASE("scripted viewer session rotates, clips, edits the transfer function a
     fs::remove_all(dir);
     fs::create_directories(dir);
     const std::string scene = std::string(VOLSG_SOURCE_DIR) + "/tests/viewer/viewer-scene.iv";
-    const std::string viewer = std::string(VOLSG_BINARY_DIR) + "/viewer/volsg-view";
-    REQUIRE(fs::exists(viewer));
+    REQUIRE(fs::exists(std::string(VOLSG_BINARY_DIR) + "/viewer/volsg-view"));
     auto file = [&](const char* name) { return (dir / name).string(); };
     {
         std::ofstream script(file("script.txt"));
@@ -106,15 +72,8 @@ TEST_CASE("scripted viewer session rotates, clips, edits the transfer function a
                << "save " << file("saved.iv") << "\n"
                << "quit\n";
     }
-    const std::string command = sanitizerEnvironment() + "xvfb-run -a -s '-screen 0 1280x800x24' " +
-                                viewer + " " + scene + " --size 800x500 --script " +
-                                file("script.txt") + " > " + file("log.txt") + " 2>&1";
-    const int status = std::system(command.c_str());
     std::string log;
-    {
-        std::ifstream in(file("log.txt"));
-        log.assign(std::istreambuf_iterator<char>(in), {});
-    }
+    const int status = runViewerScript(scene, "--size 800x500", file("script.txt"), log);
     INFO("viewer output: " << log);
     REQUIRE(status == 0);
 

@@ -61,3 +61,45 @@ TEST_CASE("a bad script line is an error naming the file and line") {
     CHECK_THROWS_AS(parseViewerScript("key hyper\n", "s"), Error);        // unknown key
     CHECK_THROWS_AS(parseViewerScript("press left 1 2 sideways\n", "s"), Error);
 }
+
+TEST_CASE("view commands set layout, navigation, stereo, cursor and region") {
+    const auto steps = parseViewerScript("layout four\n"
+                                         "navigation walk\n"
+                                         "stereo anaglyph 0.05\n"
+                                         "stereo off\n"
+                                         "cursor 3 4 5\n"
+                                         "region 7\n"
+                                         "click left view:axial:0.25,0.75\n",
+                                         "s.txt");
+    REQUIRE(steps.size() == 9);
+    CHECK(steps[0].kind == ScriptStep::Kind::Layout);
+    CHECK(steps[0].text == "four");
+    CHECK(steps[1].kind == ScriptStep::Kind::Navigation);
+    CHECK(steps[1].text == "walk");
+    CHECK(steps[2].kind == ScriptStep::Kind::Stereo);
+    CHECK(steps[2].separation == 0.05);
+    CHECK(steps[3].separation == 0.0); // unchanged
+    CHECK(steps[4].kind == ScriptStep::Kind::Cursor);
+    CHECK(steps[4].voxel == glm::ivec3(3, 4, 5));
+    CHECK(steps[5].kind == ScriptStep::Kind::Region);
+    CHECK(steps[5].voxel.x == 7);
+    CHECK(steps[6].point.kind == ScriptPoint::Kind::View);
+    CHECK(steps[6].point.canvas == "axial");
+    CHECK(steps[6].point.value.x == 0.25);
+    CHECK(steps[6].point.value.y == 0.75);
+}
+
+TEST_CASE("unknown view modes and views are errors naming the line") {
+    for (const char* bad :
+         {"layout three\n", "navigation swim\n", "stereo interlaced\n", "stereo anaglyph 2\n",
+          "region 0\n", "cursor 1 2\n", "click left view:top:0.5,0.5\n"}) {
+        CAPTURE(bad);
+        try {
+            parseViewerScript(std::string("wait 1\n") + bad, "views.txt");
+            FAIL("no error");
+        } catch (const Error& e) {
+            CHECK(e.file() == "views.txt");
+            CHECK(e.line() == 2);
+        }
+    }
+}

@@ -36,11 +36,15 @@
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/Material.h>
+#include <volsg/nodes/OrthoSlice.h>
 #include <volsg/nodes/Shape.h>
 #include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/Transform.h>
 #include <volsg/nodes/Volume.h>
+#include <volsg/nodes/VolumeData.h>
+#include <volsg/nodes/VolumeSeries.h> // complete for SeriesPanel's ref_ptr
 #include <volsg/render/Renderer.h>
+#include <volsg/voxelfile/VoxelFileScene.h>
 
 namespace volsg {
 
@@ -79,7 +83,7 @@ std::vector<Field*> textFieldsOf(Node& node) {
 Viewer::Viewer(ViewerOptions options) : options_(std::move(options)) {
     if (!options_.scriptPath.empty())
         script_ = parseViewerScript(readText(options_.scriptPath), options_.scriptPath);
-    root_ = readScene(options_.scenePath);
+    root_ = readSceneOrVoxelFile(options_.scenePath);
     sceneTime_ = std::filesystem::last_write_time(options_.scenePath);
 
     GlfwWindowOptions windowOptions;
@@ -115,13 +119,16 @@ Viewer::Viewer(ViewerOptions options) : options_(std::move(options)) {
 
     loadScene();
     setupCamera();
+    setNavigationMode(options_.navigation);
 }
 
 Viewer::~Viewer() {
     window_->makeCurrent();
     detachAll();
-    supersampleTarget_ = Framebuffer();
-    supersampleColor_ = Renderbuffer();
+    viewTarget_ = Framebuffer();
+    viewColor_ = Renderbuffer();
+    stereoSource_ = Framebuffer();
+    stereoImage_ = Texture();
     renderer_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -137,28 +144,18 @@ void Viewer::loadScene() {
     // The plane-opacity editor starts on the first volume, so it shows something at once.
     const auto volumes = findAll(*root_, Volume::classType());
     planeEditor_.setVolume(volumes.empty() ? nullptr : static_cast<Volume*>(volumes.front()));
+    attachSections();
+    seriesPanel_.attach(root_.get());
 }
 
 void Viewer::setupCamera() {
-    const glm::ivec2 size = window_->size();
-    const double aspect = double(std::max(size.x, 1)) / double(std::max(size.y, 1));
+    const ViewRect view = viewRect(kView3D);
+    const double aspect = double(view.width) / double(view.height);
     SceneCamera scene = findOrMakeCamera(*root_, aspect);
-    const auto cameras = findAll(*root_, Camera::classType());
-    ref_ptr<Camera> camera;
-    if (!cameras.empty()) {
-        // A copy in world coordinates: navigation never changes the scene until it is saved.
-        camera = ref_ptr<Node>(scene.camera->type().create()).cast<Camera>();
-        copyFieldValues(*scene.camera, *camera);
-        const glm::dmat3 m(scene.model);
-        camera->position =
-            glm::vec3(scene.model * glm::dvec4(glm::dvec3(scene.camera->position()), 1.0));
-        const glm::dquat turn = glm::quat_cast(
-            glm::dmat3(glm::normalize(m[0]), glm::normalize(m[1]), glm::normalize(m[2])));
-        camera->orientation = rotationFromQuat(turn * scene.camera->orientation().quat());
-    } else {
-        camera = scene.camera;
-    }
-    navigation_ = std::make_unique<ExaminerNavigation>(camera, size.x, size.y);
+    // A copy in world coordinates: navigation never changes the scene until it is saved.
+    const bool sceneHasCamera = !findAll(*root_, Camera::classType()).empty();
+    const ref_ptr<Camera> camera = sceneHasCamera ? worldSpaceCamera(scene) : scene.camera;
+    navigation_ = std::make_unique<ExaminerNavigation>(camera, view.width, view.height);
     navigation_->adjustClipping(sceneBox());
     navigation_->saveHome();
 }
@@ -205,6 +202,7 @@ void Viewer::onKey(int key, int mods) {
 
 bool Viewer::isInteracting() const {
     if (drag_ != Drag::None && drag_ != Drag::Pending) return true;
+    if (fly_ && fly_->speed() != 0.0) return true; // the view moves every frame
     // Dragging in an editor canvas or on a slider counts too: the render should keep up.
     return ImGui::GetCurrentContext() && ImGui::IsAnyItemActive() && ImGui::IsMouseDown(0);
 }
@@ -218,13 +216,29 @@ void Viewer::handleSceneEvents() {
         case PendingEvent::Kind::Button:
             if (e.pressed && drag_ == Drag::None && !io.WantCaptureMouse) {
                 mouse_ = e.position;
-                beginSceneDrag(e.button, e.mods);
+                const int view = viewAt(mouse_);
+                if (view > kView3D) { // a section view: the cursor moves to the clicked point
+                    const ViewRect r = viewRect(view);
+                    const glm::dvec2 local = mouse_ - glm::dvec2(r.x, r.y);
+                    if (const auto voxel =
+                            sections_.voxelAtPixel(view - 1, local, r.width, r.height))
+                        setCursor(*voxel);
+                } else if (view == kView3D) {
+                    beginSceneDrag(e.button, e.mods);
+                }
             } else if (!e.pressed && e.button == dragButton_) {
                 endSceneDrag();
             }
             break;
         case PendingEvent::Kind::Scroll:
             if (io.WantCaptureMouse) break;
+            if (const int view = viewAt(e.position); view > kView3D) {
+                // Over a section view: the wheel steps its plane through the volume.
+                glm::ivec3 voxel = sections_.cursor();
+                voxel[view - 1] += e.scroll > 0.0 ? 1 : -1;
+                setCursor(voxel);
+                break;
+            }
             if (glfwGetKey(window_->handle(), GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS)
                 navigation_->zoom(std::pow(0.9, e.scroll)); // the view angle, not the distance
             else
@@ -265,6 +279,25 @@ void Viewer::handleSceneEvents() {
                 case GLFW_KEY_A:
                     options_.antialias = !options_.antialias;
                     break;
+                case GLFW_KEY_L:
+                    setLayout(options_.layout == ViewLayout::Single ? ViewLayout::Four
+                                                                    : ViewLayout::Single);
+                    break;
+                case GLFW_KEY_E:
+                    setNavigationMode(NavigationMode::Examiner);
+                    break;
+                case GLFW_KEY_F:
+                    setNavigationMode(NavigationMode::Fly);
+                    break;
+                case GLFW_KEY_W:
+                    setNavigationMode(NavigationMode::Walk);
+                    break;
+                case GLFW_KEY_T: // off, anaglyph, side-by-side, off, ...
+                    options_.stereo.mode =
+                        options_.stereo.mode == StereoMode::Off        ? StereoMode::Anaglyph
+                        : options_.stereo.mode == StereoMode::Anaglyph ? StereoMode::SideBySide
+                                                                       : StereoMode::Off;
+                    break;
                 case GLFW_KEY_M:
                     toggleManipulator();
                     break;
@@ -279,6 +312,13 @@ void Viewer::handleSceneEvents() {
                     break;
                 case GLFW_KEY_Q:
                     quit_ = true;
+                    break;
+                case GLFW_KEY_SPACE: // series: play/pause, step back and forth
+                    seriesPanel_.togglePlay(glfwGetTime());
+                    break;
+                case GLFW_KEY_COMMA:
+                case GLFW_KEY_PERIOD:
+                    seriesPanel_.stepBy(e.key == GLFW_KEY_COMMA ? -1 : 1);
                     break;
                 default:
                     break;
@@ -296,6 +336,20 @@ void Viewer::beginSceneDrag(int button, int mods) {
     const Ray ray = navigation_->pixelRay(mouse_);
     const bool shift = mods & GLFW_MOD_SHIFT, ctrl = mods & GLFW_MOD_CONTROL,
                alt = mods & GLFW_MOD_ALT;
+    if (fly_ && !shift && !ctrl && !alt) {
+        // Inventor's fly viewer: left click faster, middle (here also right) click slower.
+        if (button == GLFW_MOUSE_BUTTON_LEFT)
+            fly_->speedUp();
+        else
+            fly_->slowDown();
+        dragButton_ = -1;
+        return;
+    }
+    if (walk_ && !shift && !ctrl && !alt) {
+        // Inventor's walk viewer: hold left to walk and turn, middle to look up and down.
+        drag_ = button == GLFW_MOUSE_BUTTON_LEFT ? Drag::Walk : Drag::Tilt;
+        return;
+    }
     if (button == GLFW_MOUSE_BUTTON_LEFT && !shift && !ctrl && !alt) {
         if (!manipulators_.empty()) {
             PickAction pick;
@@ -358,6 +412,10 @@ void Viewer::continueSceneDrag() {
     case Drag::ActiveObject:
         activeDrag_.update(mouse_ - dragStart_);
         break;
+    case Drag::Tilt:
+        walk_->tilt(-(mouse_.y - lastMouse_.y) * 0.005); // mouse up: look up
+        break;
+    case Drag::Walk: // stepNavigation() walks every frame while the button is down
     case Drag::None:
         break;
     }
@@ -365,9 +423,11 @@ void Viewer::continueSceneDrag() {
 }
 
 void Viewer::endSceneDrag() {
-    if (drag_ == Drag::Pending) { // a click: select what is under the mouse
-        const auto hit = pickScene(*root_, navigation_->pixelRay(mouse_));
+    if (drag_ == Drag::Pending) { // a click: select what is under the mouse, cursor there
+        const Ray ray = navigation_->pixelRay(mouse_);
+        const auto hit = pickScene(*root_, ray);
         select(hit ? hit->node : nullptr);
+        setCursorFromPick(ray);
     } else if (drag_ == Drag::Manipulator) {
         draggedManipulator_->endDrag();
         draggedManipulator_ = nullptr;
@@ -398,6 +458,145 @@ void Viewer::select(Node* node) {
     }
     if (node && node->isA<TransferFunction>())
         tfEditor_.selectTag(static_cast<TransferFunction*>(node)->tag());
+}
+
+// ---- views, navigation modes and the cursor -------------------------------------------------
+
+void Viewer::setLayout(ViewLayout layout) {
+    if (layout == ViewLayout::Four && !sections_.valid())
+        status("the scene has no volume: the section views have nothing to show");
+    options_.layout = layout;
+}
+
+void Viewer::setNavigationMode(NavigationMode mode) {
+    options_.navigation = mode;
+    fly_.reset();
+    walk_.reset();
+    if (drag_ == Drag::Walk || drag_ == Drag::Tilt) endSceneDrag();
+    const ViewRect r = viewRect(kView3D);
+    const Box3 box = sceneBox();
+    // A tenth of the scene's diagonal per second: ten seconds to cross it.
+    const double speed = box.isEmpty() ? 1.0 : 0.1 * glm::length(box.size());
+    if (mode == NavigationMode::Fly) {
+        fly_ = std::make_unique<FlyNavigation>(navigation_->cameraPtr(), r.width, r.height);
+        fly_->setBaseSpeed(speed);
+    } else if (mode == NavigationMode::Walk) {
+        walk_ = std::make_unique<WalkNavigation>(navigation_->cameraPtr(), r.width, r.height);
+        walk_->setWalkSpeed(speed);
+    }
+    lastNavigationStep_ = std::chrono::steady_clock::now();
+}
+
+void Viewer::stepNavigation() {
+    const auto now = std::chrono::steady_clock::now();
+    // Scripted sessions step by a fixed 1/30 s, so that they move the same on every machine.
+    const bool scripted = !script_.empty();
+    const double seconds =
+        scripted ? 1.0 / 30.0
+                 : std::min(std::chrono::duration<double>(now - lastNavigationStep_).count(), 0.1);
+    lastNavigationStep_ = now;
+    // The projection toggle makes a new camera: fly and walk follow it.
+    if ((fly_ && &fly_->camera() != &navigation_->camera()) ||
+        (walk_ && &walk_->camera() != &navigation_->camera()))
+        setNavigationMode(options_.navigation);
+    const ViewRect r = viewRect(kView3D);
+    const glm::dvec2 mouse = mouse_ - glm::dvec2(r.x, r.y);
+    if (fly_ && fly_->speed() != 0.0) fly_->step(mouse, seconds);
+    if (walk_ && drag_ == Drag::Walk) walk_->step(mouse, seconds);
+}
+
+void Viewer::attachSections() {
+    cursorSet_ = false;
+    region_.reset();
+    if (!sections_.attach(*root_) && options_.layout == ViewLayout::Four)
+        status("the scene has no volume: the section views have nothing to show");
+}
+
+void Viewer::followSceneEdits() {
+    // A Transform edit moves the section views; other data (a field edit, undo) starts over.
+    const VolumeData* before = sections_.valid() ? &sections_.data() : nullptr;
+    const bool valid = sections_.update(*root_);
+    if (!valid || &sections_.data() != before) {
+        cursorSet_ = false;
+        region_.reset();
+    }
+}
+
+void Viewer::setCursor(const glm::ivec3& voxel) {
+    if (!sections_.valid()) return;
+    sections_.setCursor(voxel);
+    cursorSet_ = true;
+    updateRegion();
+}
+
+void Viewer::setCursorFromPick(const Ray& ray) {
+    if (!sections_.valid()) return;
+    // A slice reports the voxel it shows; elsewhere, the voxel at the hit point (a volume's
+    // box where the ray enters it, or a shape inside the volume).
+    PickAction pick;
+    pick.setRay(ray);
+    pick.apply(*root_);
+    if (pick.picked() && pick.picked()->voxel) {
+        setCursor(pick.picked()->voxel->index);
+        return;
+    }
+    if (const auto hit = pickScene(*root_, ray))
+        if (const auto voxel = sections_.voxelAtWorld(hit->point)) setCursor(*voxel);
+}
+
+void Viewer::updateRegion() {
+    region_.reset();
+    if (!sections_.valid() || !cursorSet_) return;
+    const TransferFunction* tf = sections_.transferFunction();
+    glm::dvec2 range(0.0, 255.0);
+    if (tf && !tf->dataRange.isDefault()) {
+        range = glm::dvec2(tf->dataRange());
+    } else {
+        const auto natural = sections_.grid().naturalRange();
+        range = {natural.first, natural.second};
+    }
+    region_ =
+        RegionHistogram::of(sections_.grid(), sections_.cursor(), regionPanel_.regionSize, range);
+}
+
+void Viewer::drawViewOverlays() {
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const bool four = options_.layout == ViewLayout::Four && sections_.valid();
+    const ImU32 cross = IM_COL32(255, 220, 0, 200), label = IM_COL32(230, 230, 230, 255);
+    if (four) {
+        const glm::dvec3 cursor = sections_.worldOf(sections_.cursor());
+        for (int s = 0; s < 3; ++s) {
+            const ViewRect r = viewRect(1 + s);
+            const glm::dvec2 p = sections_.pixelOf(s, cursor, r.width, r.height);
+            const float x = float(r.x + p.x), y = float(r.y + p.y);
+            draw->PushClipRect(ImVec2(float(r.x), float(r.y)),
+                               ImVec2(float(r.x + r.width), float(r.y + r.height)), true);
+            draw->AddLine(ImVec2(float(r.x), y), ImVec2(float(r.x + r.width), y), cross);
+            draw->AddLine(ImVec2(x, float(r.y)), ImVec2(x, float(r.y + r.height)), cross);
+            const std::string text = std::string(SectionViews::name(s)) + "  slice " +
+                                     std::to_string(sections_.cursor()[s]);
+            draw->AddText(ImVec2(float(r.x + 6), float(r.y + r.height - 20)), label, text.c_str());
+            draw->PopClipRect();
+        }
+    }
+    if (cursorSet_) { // the cursor point in the 3D view
+        const ViewRect r = viewRect(kView3D);
+        const Camera& c = navigation_->camera();
+        const glm::dvec4 clip = c.projectionMatrix(navigation_->aspect()) * c.viewMatrix() *
+                                glm::dvec4(sections_.worldOf(sections_.cursor()), 1.0);
+        if (clip.w > 0.0) {
+            const ImVec2 p(float(r.x + (clip.x / clip.w + 1.0) * 0.5 * r.width),
+                           float(r.y + (1.0 - clip.y / clip.w) * 0.5 * r.height));
+            draw->AddCircle(p, 6.0f, cross, 12, 2.0f);
+        }
+    }
+    std::string mode = navigationModeName(options_.navigation);
+    if (fly_) mode += "  speed " + std::to_string(fly_->speed()).substr(0, 5);
+    if (options_.stereo.mode != StereoMode::Off)
+        mode += std::string("  stereo ") + stereoModeName(options_.stereo.mode);
+    const ViewRect r = viewRect(kView3D);
+    draw->AddText(ImVec2(float(r.x + r.width) * 0.5f - 60.0f, float(r.y + r.height - 20)), label,
+                  mode.c_str());
 }
 
 // ---- manipulators ---------------------------------------------------------------------------
@@ -515,7 +714,7 @@ void Viewer::screenshot(const std::string& path, bool sceneOnly) {
         o.height = size.y;
         o.background = options_.background;
         o.camera = navigation_->cameraPtr();
-        image = renderer_->render(*root_, o);
+        image = renderStereo(*renderer_, *root_, o, options_.stereo);
     } else {
         // The back buffer as drawn this frame (the front buffer reads black under GLX).
         std::vector<unsigned char> rgba(std::size_t(size.x) * std::size_t(size.y) * 4);
@@ -549,7 +748,7 @@ void Viewer::checkReload() {
     if (ec || time == sceneTime_) return;
     sceneTime_ = time;
     try {
-        ref_ptr<Node> fresh = readScene(options_.scenePath);
+        ref_ptr<Node> fresh = readSceneOrVoxelFile(options_.scenePath);
         detachAll();
         root_ = fresh;
         loadScene();
@@ -576,8 +775,16 @@ glm::dvec2 Viewer::resolvePoint(const ScriptPoint& p) const {
         const Camera& c = navigation_->camera();
         const glm::dvec4 clip =
             c.projectionMatrix(navigation_->aspect()) * c.viewMatrix() * glm::dvec4(p.value, 1.0);
-        const glm::ivec2 size = window_->size();
-        return {(clip.x / clip.w + 1.0) * 0.5 * size.x, (1.0 - clip.y / clip.w) * 0.5 * size.y};
+        const ViewRect r = viewRect(kView3D);
+        return {r.x + (clip.x / clip.w + 1.0) * 0.5 * r.width,
+                r.y + (1.0 - clip.y / clip.w) * 0.5 * r.height};
+    }
+    case ScriptPoint::Kind::View: {
+        if (p.canvas != "3d" && options_.layout != ViewLayout::Four)
+            throw Error("the " + p.canvas + " view shows only in the four-view layout");
+        const ViewRect r =
+            viewRect(p.canvas == "3d" ? kView3D : 1 + SectionViews::sectionNamed(p.canvas));
+        return {r.x + p.value.x * r.width, r.y + (1.0 - p.value.y) * r.height};
     }
     }
     return {0.0, 0.0};
@@ -634,9 +841,37 @@ void Viewer::runScriptStep() {
                 showMaterial_ = true;
             else if (s.text == "fields")
                 showFields_ = true;
+            else if (s.text == "region")
+                showRegion_ = true;
             else
                 throw Error("unknown panel '" + s.text + "'");
             options_.panels = true;
+            break;
+        case K::Layout:
+            setLayout(parseViewLayout(s.text));
+            break;
+        case K::Navigation:
+            setNavigationMode(parseNavigationMode(s.text));
+            break;
+        case K::Stereo:
+            options_.stereo.mode = parseStereoMode(s.text);
+            if (s.separation > 0.0) options_.stereo.separationFraction = s.separation;
+            break;
+        case K::Cursor:
+            if (!sections_.valid()) throw Error("the scene has no volume for the cursor");
+            setCursor(s.voxel);
+            break;
+        case K::Region:
+            regionPanel_.regionSize = s.voxel.x;
+            updateRegion();
+            break;
+        case K::SeriesStep:
+        case K::SeriesPlay:
+        case K::SeriesPause:
+            if (!seriesPanel_.active()) throw Error("the scene has no VolumeSeries");
+            if (s.kind == K::SeriesStep) seriesPanel_.setStep(s.frames);
+            if (s.kind == K::SeriesPlay) seriesPanel_.play(glfwGetTime());
+            if (s.kind == K::SeriesPause) seriesPanel_.pause();
             break;
         case K::Screenshot:
         case K::Save:
@@ -650,38 +885,119 @@ void Viewer::runScriptStep() {
     }
 }
 
-void Viewer::renderScene(int width, int height) {
+Viewer::ViewRect Viewer::viewRect(int view) const {
+    const glm::ivec2 size = glm::max(window_->size(), glm::ivec2(1));
+    if (options_.layout == ViewLayout::Single) return {0, 0, size.x, size.y};
+    // 2x2, all four the same size: 3D | axial over coronal | sagittal.
+    const int w = std::max(size.x / 2, 1), h = std::max(size.y / 2, 1);
+    switch (view) {
+    case 1 + SectionViews::Axial:
+        return {w, 0, w, h};
+    case 1 + SectionViews::Coronal:
+        return {0, h, w, h};
+    case 1 + SectionViews::Sagittal:
+        return {w, h, w, h};
+    default:
+        return {0, 0, w, h};
+    }
+}
+
+int Viewer::viewAt(const glm::dvec2& pixel) const {
+    const int views = options_.layout == ViewLayout::Four && sections_.valid() ? 4 : 1;
+    for (int v = 0; v < views; ++v)
+        if (viewRect(v).contains(pixel)) return v;
+    return -1;
+}
+
+void Viewer::drawImageIntoRect(const Image& image, const ViewRect& rect) {
+    if (!stereoImage_) {
+        stereoImage_ = Texture(GL_TEXTURE_2D);
+        stereoSource_ = Framebuffer::create();
+    }
+    stereoImage_.image2D(GL_RGBA32F, image.width, image.height, GL_RGBA, GL_FLOAT,
+                         image.pixels.data());
+    stereoSource_.attach(GL_COLOR_ATTACHMENT0, stereoImage_);
+    stereoSource_.requireComplete("stereo image");
+    stereoSource_.bind(GL_READ_FRAMEBUFFER);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    const int windowHeight = window_->size().y;
+    // The Image's row 0 is the top; GL's is the bottom: the copy flips it.
+    glBlitFramebuffer(0, image.height, image.width, 0, rect.x, windowHeight - rect.y - rect.height,
+                      rect.x + rect.width, windowHeight - rect.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Viewer::renderIntoRect(Node& root, RenderOptions o, const ViewRect& rect, bool antialias,
+                            bool stereo) {
+    o.width = rect.width;
+    o.height = rect.height;
+    if (stereo && options_.stereo.mode != StereoMode::Off) {
+        drawImageIntoRect(renderStereo(*renderer_, root, o, options_.stereo), rect);
+        return;
+    }
+    const glm::ivec2 windowSize = window_->size();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (!antialias && rect.x == 0 && rect.y == 0 && rect.width == windowSize.x &&
+        rect.height == windowSize.y) {
+        renderer_->renderToBoundFramebuffer(root, o);
+        return;
+    }
+    // Off the window first: into a double-size target for 2x2 supersampling (the renderer
+    // draws into a single-sample float target, so the window's own multisampling would not
+    // help), or just into the view's own rectangle.
+    const int scale = antialias ? 2 : 1;
+    const glm::ivec2 size(scale * rect.width, scale * rect.height);
+    if (size != viewTargetSize_) {
+        viewColor_ = Renderbuffer(GL_RGBA8, size.x, size.y);
+        viewTarget_ = Framebuffer::create();
+        viewTarget_.attach(GL_COLOR_ATTACHMENT0, viewColor_);
+        viewTarget_.requireComplete("view target");
+        viewTargetSize_ = size;
+    }
+    viewTarget_.bind(GL_FRAMEBUFFER);
+    o.width = size.x;
+    o.height = size.y;
+    renderer_->renderToBoundFramebuffer(root, o);
+    viewTarget_.bind(GL_READ_FRAMEBUFFER);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    const int y0 = windowSize.y - rect.y - rect.height;
+    glBlitFramebuffer(0, 0, size.x, size.y, rect.x, y0, rect.x + rect.width, y0 + rect.height,
+                      GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, windowSize.x, windowSize.y);
+}
+
+void Viewer::renderViews() {
     RenderOptions o;
-    o.width = width;
-    o.height = height;
     o.background = options_.background;
     o.interactive = isInteracting();
     o.interactivePlaneScale = quality_.scale();
     o.camera = navigation_->cameraPtr();
+    const bool four = options_.layout == ViewLayout::Four && sections_.valid();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!options_.antialias) {
-        renderer_->renderToBoundFramebuffer(*root_, o);
-        return;
+    if (four) { // the seams between the views
+        const glm::ivec2 size = window_->size();
+        glViewport(0, 0, size.x, size.y);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
     }
-    // 2x2 supersampling: the renderer draws into a single-sample float target, so the window's
-    // own multisampling would not help; a double-size image filtered down does.
-    const glm::ivec2 big(2 * width, 2 * height);
-    if (big != supersampleSize_) {
-        supersampleColor_ = Renderbuffer(GL_RGBA8, big.x, big.y);
-        supersampleTarget_ = Framebuffer::create();
-        supersampleTarget_.attach(GL_COLOR_ATTACHMENT0, supersampleColor_);
-        supersampleTarget_.requireComplete("supersampling target");
-        supersampleSize_ = big;
+    // One cache frame for all views: the section graphs USE the scene's VolumeData and
+    // TransferFunction nodes, so their textures and tables are made once for every view.
+    renderer_->beginViewGroup();
+    try {
+        renderIntoRect(*root_, o, viewRect(kView3D), options_.antialias, true);
+        if (four)
+            for (int s = 0; s < 3; ++s) {
+                const ViewRect r = viewRect(1 + s);
+                RenderOptions section = o;
+                section.camera = sections_.camera(s, double(r.width) / double(r.height));
+                renderIntoRect(sections_.graph(s), section, r, false, false);
+            }
+    } catch (...) {
+        renderer_->endViewGroup();
+        throw;
     }
-    supersampleTarget_.bind(GL_FRAMEBUFFER);
-    o.width = big.x;
-    o.height = big.y;
-    renderer_->renderToBoundFramebuffer(*root_, o);
-    supersampleTarget_.bind(GL_READ_FRAMEBUFFER);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, big.x, big.y, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
+    renderer_->endViewGroup();
 }
 
 void Viewer::frame() {
@@ -703,8 +1019,10 @@ void Viewer::frame() {
         }
     }
 
-    const glm::ivec2 size = window_->size();
-    navigation_->setViewport(size.x, size.y);
+    const ViewRect view3D = viewRect(kView3D);
+    navigation_->setViewport(view3D.width, view3D.height);
+    if (fly_) fly_->setViewport(view3D.width, view3D.height);
+    if (walk_) walk_->setViewport(view3D.width, view3D.height);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGuiIO& io = ImGui::GetIO();
@@ -714,14 +1032,18 @@ void Viewer::frame() {
     ImGui::NewFrame();
     handleSceneEvents();
     events_.clear();
+    seriesPanel_.update(glfwGetTime());
+    followSceneEdits();
     if (options_.panels) drawPanels();
+    drawViewOverlays();
+    stepNavigation();
     syncManipulators();
     navigation_->adjustClipping(sceneBox());
     ImGui::Render();
 
     const auto renderStart = std::chrono::steady_clock::now();
     try {
-        renderScene(size.x, size.y);
+        renderViews();
     } catch (const Error& e) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glClearColor(0.3f, 0.0f, 0.0f, 1.0f);
@@ -817,6 +1139,7 @@ void Viewer::drawPanels() {
         attached |= a.manipulator->original() == selected_.get();
     if (ImGui::Button(attached ? "remove manipulator (m)" : "manipulate (m)")) toggleManipulator();
     ImGui::EndDisabled();
+    drawViewControls();
     if (!statusText_.empty()) ImGui::TextWrapped("%s", statusText_.c_str());
     ImGui::Separator();
     drawSceneTree(*root_, 0);
@@ -851,6 +1174,11 @@ void Viewer::drawPanels() {
     } else {
         canvases_.erase("planeOpacity");
     }
+    if (seriesPanel_.active()) { // the time series' player, under the Scene panel
+        ImGui::SetNextWindowPos(ImVec2(0, h * 0.45f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(left, 150.0f), ImGuiCond_FirstUseEver);
+        seriesPanel_.draw(glfwGetTime());
+    }
     if (showMaterial_) {
         const float top = tfHeight + planeHeight;
         ImGui::SetNextWindowPos(ImVec2(w - right, top), ImGuiCond_FirstUseEver);
@@ -858,6 +1186,31 @@ void Viewer::drawPanels() {
         ImGui::Begin("Material", &showMaterial_);
         drawMaterialPanel(materialEditor_);
         ImGui::End();
+    }
+    if (showRegion_) {
+        ImGui::SetNextWindowPos(ImVec2(left, h - 200.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(std::min(320.0f, w - left - right), 200.0f),
+                                 ImGuiCond_FirstUseEver);
+        ImGui::Begin("Cursor", &showRegion_);
+        if (drawRegionHistogramPanel(region_, regionPanel_)) updateRegion();
+        ImGui::End();
+    }
+}
+
+void Viewer::drawViewControls() {
+    int layout = int(options_.layout);
+    if (ImGui::Combo("layout (l)", &layout, "single view\0four views\0"))
+        setLayout(ViewLayout(layout));
+    int navigation = int(options_.navigation);
+    if (ImGui::Combo("navigation (e f w)", &navigation, "examiner\0fly\0walk\0"))
+        setNavigationMode(NavigationMode(navigation));
+    int stereo = int(options_.stereo.mode);
+    if (ImGui::Combo("stereo (t)", &stereo, "off\0red-cyan anaglyph\0side by side\0"))
+        options_.stereo.mode = StereoMode(stereo);
+    if (options_.stereo.mode != StereoMode::Off) {
+        float fraction = float(options_.stereo.separationFraction);
+        if (ImGui::SliderFloat("eye separation", &fraction, 0.005f, 0.2f, "%.3f x focal"))
+            options_.stereo.separationFraction = double(fraction);
     }
 }
 

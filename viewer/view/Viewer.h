@@ -18,16 +18,25 @@
 #include <volsg/editors/FieldPanelModel.h>
 #include <volsg/editors/MaterialEditor.h>
 #include <volsg/editors/PlaneOpacityEditor.h>
+#include <volsg/editors/RegionHistogram.h>
 #include <volsg/editors/TransferFunctionEditor.h>
 #include <volsg/editors/panels/FieldPanel.h>
+#include <volsg/editors/panels/RegionHistogramPanel.h>
 #include <volsg/editors/panels/TransferFunctionPanel.h>
 #include <volsg/gl/Framebuffer.h>
 #include <volsg/gl/Renderbuffer.h>
+#include <volsg/gl/Texture.h>
 #include <volsg/manipulators/ExaminerNavigation.h>
+#include <volsg/manipulators/FlyNavigation.h>
 #include <volsg/manipulators/Manipulator.h>
+#include <volsg/manipulators/WalkNavigation.h>
 #include <volsg/math/Box3.h>
+#include <volsg/render/StereoRenderer.h>
 
 #include "InteractiveQuality.h"
+#include "SectionViews.h"
+#include "SeriesPanel.h"
+#include "ViewModes.h"
 #include "ViewerScript.h"
 
 namespace volsg {
@@ -42,6 +51,9 @@ struct ViewerOptions {
     glm::vec3 background{0.1f, 0.1f, 0.12f};
     bool antialias = false; ///< 2x2 supersampling of the scene
     bool panels = true;     ///< the editor panels (F1 toggles them)
+    ViewLayout layout = ViewLayout::Single;
+    NavigationMode navigation = NavigationMode::Examiner;
+    StereoOptions stereo{StereoMode::Off}; ///< of the 3D view
 };
 
 class Viewer {
@@ -61,7 +73,15 @@ public:
     void onKey(int key, int mods);
 
 private:
-    enum class Drag { None, Pending, Rotate, Pan, Dolly, Manipulator, ActiveObject };
+    enum class Drag { None, Pending, Rotate, Pan, Dolly, Manipulator, ActiveObject, Walk, Tilt };
+    /// A view's place in the window: pixels, origin top-left.
+    struct ViewRect {
+        int x = 0, y = 0, width = 1, height = 1;
+        bool contains(const glm::dvec2& p) const {
+            return p.x >= x && p.y >= y && p.x < x + width && p.y < y + height;
+        }
+    };
+    static constexpr int kView3D = 0; ///< views: 0 the 3D view, 1 + SectionViews::Section
     struct Attached {
         ref_ptr<Node> node; ///< the manipulator
         Manipulator* manipulator = nullptr;
@@ -89,8 +109,25 @@ private:
     void detachAll();
     void reattach(const std::vector<ref_ptr<Node>>& originals);
     void syncManipulators();
-    void renderScene(int width, int height);
+    ViewRect viewRect(int view) const;
+    int viewAt(const glm::dvec2& pixel) const; ///< -1 outside every view
+    void renderViews();
+    /// Renders `root` seen by options.camera into `rect` of the window (supersampled when
+    /// `antialias`); the 3D view goes through the stereo renderer when stereo is on.
+    void renderIntoRect(Node& root, RenderOptions options, const ViewRect& rect, bool antialias,
+                        bool stereo);
+    void drawImageIntoRect(const Image& image, const ViewRect& rect);
+    void drawViewOverlays();
+    void setLayout(ViewLayout layout);
+    void setNavigationMode(NavigationMode mode);
+    void stepNavigation();
+    void attachSections();
+    void followSceneEdits();
+    void setCursor(const glm::ivec3& voxel);
+    void setCursorFromPick(const Ray& ray);
+    void updateRegion();
     void drawPanels();
+    void drawViewControls();
     void drawSceneTree(Node& node, int depth);
     void saveScene(const std::string& path);
     void writeViewToSceneCamera();
@@ -108,7 +145,15 @@ private:
     std::chrono::steady_clock::time_point lastReloadCheck_{};
 
     std::unique_ptr<ExaminerNavigation> navigation_;
+    std::unique_ptr<FlyNavigation> fly_;   ///< on navigation_'s camera while flying
+    std::unique_ptr<WalkNavigation> walk_; ///< on navigation_'s camera while walking
+    std::chrono::steady_clock::time_point lastNavigationStep_{};
+    SectionViews sections_;
+    bool cursorSet_ = false; ///< a click (or the script) placed the cursor
+    std::optional<RegionHistogram> region_;
+    RegionHistogramPanelState regionPanel_;
     InteractiveQuality quality_;
+    SeriesPanel seriesPanel_; ///< the first VolumeSeries of the scene
     EditHistory history_;
     TransferFunctionEditor tfEditor_{history_};
     TransferFunctionPanelState tfPanel_;
@@ -138,14 +183,17 @@ private:
     bool quit_ = false;
     int exitStatus_ = 0;
 
-    Framebuffer supersampleTarget_;
-    Renderbuffer supersampleColor_;
-    glm::ivec2 supersampleSize_{0};
+    Framebuffer viewTarget_; ///< a view drawn off the window, then copied into its rectangle
+    Renderbuffer viewColor_;
+    glm::ivec2 viewTargetSize_{0};
+    Texture stereoImage_; ///< a stereo image on its way into the window
+    Framebuffer stereoSource_;
     double lastFrameMs_ = 0.0;
     double lastRenderMs_ = 0.0;
     std::string statusText_;
     std::map<std::string, std::pair<glm::vec2, glm::vec2>> canvases_; ///< scripted UI places
-    bool showTf_ = true, showPlane_ = true, showMaterial_ = true, showFields_ = true;
+    bool showTf_ = true, showPlane_ = true, showMaterial_ = true, showFields_ = true,
+         showRegion_ = true;
     int screenshotCount_ = 0;
 };
 

@@ -8,6 +8,9 @@
 #include <GLFW/glfw3.h>
 
 #include <volsg/core/Error.h>
+#include <volsg/render/StereoRenderer.h>
+
+#include "ViewModes.h"
 
 namespace volsg {
 
@@ -84,8 +87,18 @@ struct LineReader {
             p.kind = ScriptPoint::Kind::Canvas;
             p.canvas = place;
             p.value = {v[0], v[1], 0.0};
+        } else if (place == "view") {
+            const auto colon2 = rest.find(':');
+            if (colon2 == std::string::npos) fail("expected view:NAME:U,V, got '" + w + "'");
+            const auto v = triple(rest.substr(colon2 + 1), 2);
+            p.kind = ScriptPoint::Kind::View;
+            p.canvas = rest.substr(0, colon2);
+            if (p.canvas != "3d" && p.canvas != "axial" && p.canvas != "coronal" &&
+                p.canvas != "sagittal")
+                fail("unknown view '" + p.canvas + "' (3d, axial, coronal, sagittal)");
+            p.value = {v[0], v[1], 0.0};
         } else {
-            fail("unknown place '" + place + "' (world, tf, planeOpacity)");
+            fail("unknown place '" + place + "' (world, tf, planeOpacity, view)");
         }
         return p;
     }
@@ -215,6 +228,36 @@ std::vector<ScriptStep> parseViewerScript(const std::string& text, const std::st
             s.text = r.word("a name");
             r.end();
             steps.push_back(s);
+        } else if (command == "layout" || command == "navigation" || command == "stereo") {
+            s.kind = command == "layout"       ? K::Layout
+                     : command == "navigation" ? K::Navigation
+                                               : K::Stereo;
+            s.text = r.word("a mode");
+            try {
+                if (s.kind == K::Layout) parseViewLayout(s.text);
+                if (s.kind == K::Navigation) parseNavigationMode(s.text);
+                if (s.kind == K::Stereo) parseStereoMode(s.text);
+            } catch (const Error& e) {
+                r.fail(e.what());
+            }
+            if (s.kind == K::Stereo && r.more()) {
+                s.separation = r.number("an eye separation");
+                if (!(s.separation > 0.0 && s.separation <= 1.0))
+                    r.fail("the eye separation is a fraction of the focal distance in (0, 1]");
+            }
+            r.end();
+            steps.push_back(s);
+        } else if (command == "cursor") {
+            s.kind = K::Cursor;
+            s.voxel = {r.count("I"), r.count("J"), r.count("K")};
+            r.end();
+            steps.push_back(s);
+        } else if (command == "region") {
+            s.kind = K::Region;
+            s.voxel.x = r.count("a region size");
+            if (s.voxel.x < 1) r.fail("the region size must be at least 1");
+            r.end();
+            steps.push_back(s);
         } else if (command == "screenshot") {
             s.kind = K::Screenshot;
             s.text = r.word("a PNG file name");
@@ -227,6 +270,15 @@ std::vector<ScriptStep> parseViewerScript(const std::string& text, const std::st
         } else if (command == "save") {
             s.kind = K::Save;
             s.text = r.word("a scene file name");
+            r.end();
+            steps.push_back(s);
+        } else if (command == "step") {
+            s.kind = K::SeriesStep;
+            s.frames = r.count("a step number");
+            r.end();
+            steps.push_back(s);
+        } else if (command == "play" || command == "pause") {
+            s.kind = command == "play" ? K::SeriesPlay : K::SeriesPause;
             r.end();
             steps.push_back(s);
         } else if (command == "quit") {

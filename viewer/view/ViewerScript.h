@@ -13,14 +13,25 @@
 //   scroll DY [X Y]
 //   key NAME [MODS]                 a-z 0-9 escape enter space tab delete f1-f12
 //   select NAME                     the node DEF'd NAME, as a click in the scene tree
-//   panel NAME                      show the named panel (tf, planeOpacity, material, fields)
+//   panel NAME                      show the named panel (tf, planeOpacity, material, fields,
+//                                   region)
+//   layout single|four              the 3D view alone, or with the three section views
+//   navigation examiner|fly|walk    the navigation mode of the 3D view
+//   stereo off|anaglyph|side-by-side [FRACTION]   stereo, with the eye separation as a
+//                                   fraction of the camera's focalDistance
+//   cursor I J K                    the 3D cursor on voxel (I, J, K) of the first volume
+//   region K                        the readout's histogram region: K^3 voxels
 //   screenshot FILE [scene]         the window with its panels; `scene`: the scene alone
 //   save FILE                       the edited scene (SCENE-FORMAT)
+//   step N                          show step N of the first VolumeSeries (pauses)
+//   play | pause                    play the series on / pause it
 //   quit
 //
 // A point X Y is window pixels (origin top-left), or one word naming a place that is resolved
 // when the step runs: `tf:U,V` / `planeOpacity:U,V` (U, V in [0, 1] across a panel's curve
-// canvas, V up) or `world:X,Y,Z` (where a world point shows in the view).
+// canvas, V up), `world:X,Y,Z` (where a world point shows in the 3D view) or `view:NAME:U,V`
+// (U, V in [0, 1] across a view of the four-view layout, V up; NAME: 3d axial coronal
+// sagittal).
 
 #include <string>
 #include <vector>
@@ -31,9 +42,9 @@ namespace volsg {
 
 /// A point as the script gives it: pixels, or a named place resolved at run time.
 struct ScriptPoint {
-    enum class Kind { Pixels, Canvas, World };
+    enum class Kind { Pixels, Canvas, World, View };
     Kind kind = Kind::Pixels;
-    std::string canvas;    ///< for Canvas
+    std::string canvas;    ///< for Canvas and View: its name
     glm::dvec3 value{0.0}; ///< pixels (x, y), canvas (u, v) or a world point
 };
 
@@ -47,8 +58,16 @@ struct ScriptStep {
         Key,
         Select,
         Panel,
+        Layout,
+        Navigation,
+        Stereo,
+        Cursor,
+        Region,
         Screenshot,
         Save,
+        SeriesStep,
+        SeriesPlay,
+        SeriesPause,
         Quit
     };
     Kind kind = Kind::Wait;
@@ -61,6 +80,8 @@ struct ScriptStep {
     bool sceneOnly = false; ///< Screenshot
     int mods = 0;           ///< GLFW modifier bits
     int line = 0;           ///< in the script file, for messages
+    double separation = 0;  ///< Stereo: the eye separation fraction (0: unchanged)
+    glm::ivec3 voxel{0};    ///< Cursor; Region: voxel.x = K
 };
 
 /// Reads a script (drag and click are expanded into their steps). Throws Error with the file,

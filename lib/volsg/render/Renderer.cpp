@@ -116,6 +116,7 @@ struct Renderer::Impl {
     ShapeRenderer shapes;
     RenderTarget target;
     RenderStats stats;
+    bool inViewGroup = false; ///< the cache frame spans several renders (beginViewGroup)
 
     /// Draws one frame into `target` (left bound).
     void drawFrame(Node& root, const RenderOptions& options);
@@ -157,7 +158,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-    cache.beginFrame();
+    if (!inViewGroup) cache.beginFrame();
     shapes.beginFrame(view);
     RenderAction action(cache, shapes, target, view, options.interactive);
     action.setInteractivePlaneScale(options.interactivePlaneScale);
@@ -170,7 +171,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
         if (pass == RenderPass::Transparent) shapes.drawQueuedTransparent();
     }
     shapes.endFrame();
-    cache.endFrame();
+    if (!inViewGroup) cache.endFrame();
 
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
@@ -198,6 +199,18 @@ std::vector<float> Renderer::readWindowDepth() const {
     flipRows(depth, target.width(), target.height());
     checkGlError("Renderer::readWindowDepth");
     return depth;
+}
+
+void Renderer::beginViewGroup() {
+    if (!impl_->inViewGroup) impl_->cache.beginFrame();
+    impl_->inViewGroup = true;
+}
+
+void Renderer::endViewGroup() {
+    if (!impl_->inViewGroup) return;
+    impl_->inViewGroup = false;
+    impl_->cache.endFrame();
+    impl_->stats.cachedEntries = impl_->cache.size();
 }
 
 const RenderStats& Renderer::stats() const {

@@ -63,6 +63,13 @@ public:
     /// still be current. Empty before the first frame.
     std::vector<float> readWindowDepth() const;
 
+    /// Several renders that make one displayed frame (the viewer's section views, a stereo
+    /// pair): from beginViewGroup() to endViewGroup() the per-node GPU caches keep every entry
+    /// any of the renders used, so views that share nodes share their GL resources instead of
+    /// freeing them after one view and rebuilding them for the next.
+    void beginViewGroup();
+    void endViewGroup();
+
     const RenderStats& stats() const;
 
     struct Impl;
