@@ -92,7 +92,6 @@ struct EnumWordTraits {
 struct BitWordsTraits {
     using Value = std::vector<std::string>;
     static constexpr const char* sfName = "SFBitMask";
-    static constexpr const char* mfName = "MFBitMask";
     static Value read(Tokenizer& in) {
         Value words;
         if (!in.acceptPunct('(')) {
