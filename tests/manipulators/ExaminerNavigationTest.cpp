@@ -117,3 +117,92 @@ TEST_CASE("the pixel ray through the centre is the view axis") {
     CHECK(std::atan2(top.direction.y, -top.direction.z) ==
           doctest::Approx(glm::radians(30.0)).epsilon(1e-6));
 }
+
+TEST_CASE("an animated seek starts at the camera and ends exactly where the instant seek goes") {
+    auto tilted = [] {
+        auto camera = cameraAt(10.0, 10.0);
+        camera->position = glm::vec3(1.0f, 2.0f, 9.0f);
+        camera->orientation = Rotation{glm::vec3(1.0f, 1.0f, 0.0f), 0.3f};
+        return camera;
+    };
+    const glm::dvec3 point(1.5, 2.5, 1.0);
+    ExaminerNavigation instant(tilted(), 300, 300);
+    instant.seek(point);
+    ExaminerNavigation animated(tilted(), 300, 300);
+    const glm::dvec3 start(animated.camera().position());
+    REQUIRE(animated.startSeek(point, 0.5, 0.5));
+    CHECK(animated.isSeeking());
+    // t = 0 is the camera as it was (position within float rounding, 1e-6 relative).
+    const CameraPose p0 = animated.seekPose(0.0);
+    CHECK(glm::length(p0.position - start) < 1e-5);
+    CHECK(std::abs(glm::dot(p0.orientation, animated.camera().orientation().quat())) ==
+          doctest::Approx(1.0).epsilon(1e-9));
+    CHECK(p0.focalDistance == doctest::Approx(10.0).epsilon(1e-9));
+
+    // 1/30 s frames: the distance to the picked point shrinks at every step, the orientation
+    // stays a unit quaternion, and after 0.5 s the seek is over.
+    double last = glm::length(start - point);
+    int frames = 0;
+    while (animated.stepSeek(1.0 / 30.0)) {
+        ++frames;
+        const double d = glm::length(glm::dvec3(animated.camera().position()) - point);
+        CHECK(d < last);
+        last = d;
+        CHECK(glm::length(animated.seekPose(frames / 30.0).orientation) ==
+              doctest::Approx(1.0).epsilon(1e-12));
+        REQUIRE(frames < 100);
+    }
+    CHECK(frames == 14); // the 15th frame reaches t = 0.5 and ends it
+    CHECK_FALSE(animated.isSeeking());
+    // The end: bit for bit the fields the instant seek sets.
+    CHECK(animated.camera().position() == instant.camera().position());
+    CHECK(animated.camera().focalDistance() == instant.camera().focalDistance());
+    CHECK(animated.camera().orientation().axis == instant.camera().orientation().axis);
+    CHECK(animated.camera().orientation().angle == instant.camera().orientation().angle);
+    CHECK(glm::length(animated.focalPoint() - point) < 1e-5);
+}
+
+TEST_CASE("seek easing and pose interpolation start and stop at rest on unit quaternions") {
+    CHECK(seekEasing(0.0) == 0.0);
+    CHECK(seekEasing(1.0) == 1.0);
+    CHECK(seekEasing(0.5) == doctest::Approx(0.5).epsilon(1e-12));
+    CHECK(seekEasing(0.01) < 0.001); // slope 0 at the ends: 3 s^2
+    CHECK(seekEasing(-1.0) == 0.0);
+    CHECK(seekEasing(2.0) == 1.0);
+    // A quarter turn about y between two poses: half way is an eighth turn, unit length.
+    CameraPose a, b;
+    a.position = glm::dvec3(0.0, 0.0, 4.0);
+    b.position = glm::dvec3(4.0, 0.0, 0.0);
+    b.orientation = glm::angleAxis(glm::radians(90.0), glm::dvec3(0.0, 1.0, 0.0));
+    a.focalDistance = 4.0;
+    b.focalDistance = 2.0;
+    for (double s = 0.0; s <= 1.0; s += 0.125) {
+        const CameraPose p = interpolatePose(a, b, s);
+        CHECK(glm::length(p.orientation) == doctest::Approx(1.0).epsilon(1e-12));
+        CHECK(glm::angle(p.orientation) == doctest::Approx(s * glm::radians(90.0)).epsilon(1e-9));
+        CHECK(p.focalDistance == doctest::Approx(4.0 - 2.0 * s).epsilon(1e-12));
+    }
+    // The negated (same) end orientation goes the same, shorter, way.
+    CameraPose c = b;
+    c.orientation = -b.orientation;
+    CHECK(glm::angle(interpolatePose(a, c, 0.5).orientation) ==
+          doctest::Approx(glm::radians(45.0)).epsilon(1e-9));
+}
+
+TEST_CASE("a seek to a point behind the camera does nothing and navigation stops a seek") {
+    ExaminerNavigation nav(cameraAt(10.0, 10.0), 300, 300);
+    CHECK_FALSE(nav.startSeek({0.0, 0.0, 12.0}));
+    CHECK_FALSE(nav.isSeeking());
+    CHECK(nav.camera().position().z == 10.0f);
+    REQUIRE(nav.startSeek({0.0, 0.0, 2.0}, 0.5, 1.0));
+    nav.stepSeek(0.5);
+    const float half = nav.camera().position().z;
+    CHECK(half == doctest::Approx(8.0).epsilon(1e-6)); // smoothstep(0.5): half way, z 10 -> 6
+    nav.dolly(0.5);
+    CHECK_FALSE(nav.isSeeking());
+    CHECK_FALSE(nav.stepSeek(0.5)); // nothing left to run
+    // A zero duration seeks at once.
+    REQUIRE(nav.startSeek({0.0, 0.0, 2.0}, 0.5, 0.0));
+    CHECK_FALSE(nav.isSeeking());
+    CHECK(glm::length(nav.focalPoint() - glm::dvec3(0.0, 0.0, 2.0)) < 1e-5);
+}

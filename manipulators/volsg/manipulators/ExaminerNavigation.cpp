@@ -21,6 +21,23 @@ double halfHeightAtFocus(const Camera& c, double aspect) {
 }
 } // namespace
 
+CameraPose interpolatePose(const CameraPose& from, const CameraPose& to, double s) {
+    s = std::clamp(s, 0.0, 1.0);
+    CameraPose p;
+    p.position = glm::mix(from.position, to.position, s);
+    glm::dquat b = glm::normalize(to.orientation);
+    const glm::dquat a = glm::normalize(from.orientation);
+    if (glm::dot(a, b) < 0.0) b = -b; // the shorter way round
+    p.orientation = glm::normalize(glm::slerp(a, b, s));
+    p.focalDistance = from.focalDistance + (to.focalDistance - from.focalDistance) * s;
+    return p;
+}
+
+double seekEasing(double s) {
+    s = std::clamp(s, 0.0, 1.0);
+    return s * s * (3.0 - 2.0 * s);
+}
+
 ExaminerNavigation::ExaminerNavigation(ref_ptr<Camera> camera, int width, int height)
     : camera_(std::move(camera)) {
     setViewport(width, height);
@@ -56,6 +73,7 @@ glm::dvec3 ExaminerNavigation::trackballVector(const glm::dvec2& pixel) const {
 }
 
 void ExaminerNavigation::rotate(const glm::dvec2& from, const glm::dvec2& to) {
+    stopSeek();
     const glm::dquat turn = rotationBetween(trackballVector(from), trackballVector(to));
     const glm::dvec3 focus = focalPoint();
     // The scene turns by `turn` in eye space, so the camera turns the other way about the focus.
@@ -70,6 +88,7 @@ double ExaminerNavigation::worldUnitsPerPixel() const {
 }
 
 void ExaminerNavigation::pan(const glm::dvec2& from, const glm::dvec2& to) {
+    stopSeek();
     const glm::dvec2 delta = (to - from) * worldUnitsPerPixel();
     const glm::dvec3 right = glm::normalize(glm::cross(viewDirection(), upDirection()));
     // Dragging right moves the scene right: the camera goes left (y is down in pixels).
@@ -79,6 +98,7 @@ void ExaminerNavigation::pan(const glm::dvec2& from, const glm::dvec2& to) {
 
 void ExaminerNavigation::dolly(double factor) {
     if (!(factor > 0.0)) return;
+    stopSeek();
     if (auto* o = dynamic_cast<OrthographicCamera*>(camera_.get())) {
         o->height = float(double(o->height()) * factor);
         return;
@@ -100,18 +120,71 @@ void ExaminerNavigation::zoom(double factor) {
 }
 
 void ExaminerNavigation::viewAll(const Box3& box) {
+    stopSeek();
     camera_->viewAll(box, aspect());
 }
 
-void ExaminerNavigation::seek(const glm::dvec3& point, double fraction) {
-    const glm::dvec3 position(camera_->position());
+std::optional<CameraPose> ExaminerNavigation::seekTarget(const glm::dvec3& point,
+                                                         double fraction) const {
+    CameraPose to = pose();
     const glm::dvec3 forward = viewDirection();
     // Distance along the view to the point after moving `fraction` of the way there.
-    const double along = glm::dot(point - position, forward);
-    if (!(along > 0.0)) return;
-    const double distance = along * (1.0 - std::clamp(fraction, 0.0, 0.99));
-    camera_->position = glm::vec3(point - forward * distance);
-    camera_->focalDistance = float(distance);
+    const double along = glm::dot(point - to.position, forward);
+    if (!(along > 0.0)) return std::nullopt;
+    to.focalDistance = along * (1.0 - std::clamp(fraction, 0.0, 0.99));
+    to.position = point - forward * to.focalDistance;
+    return to;
+}
+
+CameraPose ExaminerNavigation::pose() const {
+    return {glm::dvec3(camera_->position()), glm::normalize(camera_->orientation().quat()),
+            double(camera_->focalDistance())};
+}
+
+void ExaminerNavigation::applyPose(const CameraPose& pose) {
+    camera_->position = glm::vec3(pose.position);
+    camera_->orientation = rotationFromQuat(pose.orientation);
+    camera_->focalDistance = float(pose.focalDistance);
+}
+
+void ExaminerNavigation::seek(const glm::dvec3& point, double fraction) {
+    stopSeek();
+    const auto to = seekTarget(point, fraction);
+    if (!to) return;
+    camera_->position = glm::vec3(to->position);
+    camera_->focalDistance = float(to->focalDistance);
+}
+
+bool ExaminerNavigation::startSeek(const glm::dvec3& point, double fraction, double duration) {
+    const auto to = seekTarget(point, fraction);
+    if (!to) return false;
+    if (!(duration > 0.0)) {
+        seek(point, fraction);
+        return true;
+    }
+    seek_ = Seek{pose(), *to, camera_->orientation(), duration, 0.0};
+    return true;
+}
+
+CameraPose ExaminerNavigation::seekPose(double t) const {
+    if (!seek_) return pose();
+    return interpolatePose(seek_->from, seek_->to, seekEasing(t / seek_->duration));
+}
+
+bool ExaminerNavigation::stepSeek(double seconds) {
+    if (!seek_) return false;
+    seek_->elapsed += std::max(seconds, 0.0);
+    // (With a little slack, so that frames summing to the duration end it in rounding.)
+    if (seek_->elapsed >= seek_->duration * (1.0 - 1e-9)) {
+        // Exactly the fields seek() sets: the orientation field is left as it was.
+        camera_->position = glm::vec3(seek_->to.position);
+        camera_->focalDistance = float(seek_->to.focalDistance);
+        camera_->orientation = seek_->endOrientation;
+        seek_.reset();
+        return false;
+    }
+    applyPose(seekPose(seek_->elapsed));
+    return true;
 }
 
 bool ExaminerNavigation::isOrthographic() const {
@@ -153,6 +226,7 @@ void ExaminerNavigation::saveHome() {
 }
 
 void ExaminerNavigation::goHome() {
+    stopSeek();
     if (home_.orthographic != isOrthographic()) toggleProjection();
     camera_->position = home_.position;
     camera_->orientation = home_.orientation;
