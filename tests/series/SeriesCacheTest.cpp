@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -95,6 +96,97 @@ TEST_CASE("spill files give the voxel object back bit for bit and refuse damaged
     CHECK_THROWS_AS(readSpillFile(path), Error);
 }
 
+TEST_CASE("a read-back object adopts the spilled RenderLists as they were: identical, no sort") {
+    const ref_ptr<VoxelObject> object =
+        VoxelObject::extract(*makeMovingSphere(kSide, 0.5), nullptr, visibleSpec());
+    // Lists as the renderer leaves them: arranged for a clip state and tables, masks made.
+    RenderList& z = object->renderList(2);
+    z.clipKey = 0x1234;
+    z.tableKey = 0x5678;
+    z.clippedLayout = PackedLayout::GradientValue;
+    z.contributesUnclipped.assign(std::size_t(1) << 16, 1);
+    z.contributesUnclipped[7] = 0;
+    z.entries.front().optimized = true;
+    z.entries.front().last = z.entries.front().first; // the optimizer moved them all behind
+    object->renderList(0);
+    REQUIRE(object->renderListBuilds() == 2u);
+
+    const std::string path =
+        (std::filesystem::temp_directory_path() / "volsg-spill-lists-test.voxels").string();
+    writeSpillFile(path, *object);
+    const ref_ptr<VoxelObject> back = readSpillFile(path);
+    std::filesystem::remove(path);
+    CHECK(sameArrays(*object, *back));
+    CHECK(back->hasRenderList(0));
+    CHECK_FALSE(back->hasRenderList(1));
+    CHECK(back->hasRenderList(2));
+    CHECK(back->renderList(2).sameContent(object->renderList(2)));
+    CHECK(back->renderList(0).sameContent(object->renderList(0)));
+    CHECK(back->renderListBuilds() == 0u); // adopted: nothing was sorted
+    back->renderList(1);                   // a list the file did not hold is sorted as before
+    CHECK(back->renderListBuilds() == 1u);
+    CHECK(back->renderList(1).sameContent(object->renderList(1)));
+}
+
+TEST_CASE("spill files of another version or with damaged bytes are refused, naming the file") {
+    const ref_ptr<VoxelObject> object =
+        VoxelObject::extract(*makeMovingSphere(kSide, 0.5), nullptr, visibleSpec());
+    object->renderList(2);
+    const std::string path =
+        (std::filesystem::temp_directory_path() / "volsg-spill-damage-test.voxels").string();
+    auto patch = [&](std::streamoff at, const std::string& bytes) {
+        writeSpillFile(path, *object);
+        std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
+        file.seekp(at);
+        file.write(bytes.data(), std::streamsize(bytes.size()));
+    };
+    patch(8, std::string("\x01\0\0\0", 4)); // the version field after the 8-byte magic
+    CHECK_THROWS_WITH_AS(readSpillFile(path), doctest::Contains("format version 1"), Error);
+    CHECK_THROWS_WITH_AS(readSpillFile(path), doctest::Contains(path.c_str()), Error);
+    // One voxel's attribute in the middle of the file: sizes still match, the checksum not.
+    patch(std::streamoff(std::filesystem::file_size(path) / 2), "\x5a\xa5");
+    CHECK_THROWS_WITH_AS(readSpillFile(path), doctest::Contains("checksum"), Error);
+    CHECK_THROWS_WITH_AS(readSpillFile(path), doctest::Contains(path.c_str()), Error);
+    patch(0, "XXXX");
+    CHECK_THROWS_WITH_AS(readSpillFile(path), doctest::Contains("not a series disk cache"), Error);
+    std::filesystem::remove(path);
+}
+
+TEST_CASE("a damaged spill file costs a re-extraction of its step, never the step") {
+    constexpr int steps = 4;
+    const ExtractionSpec spec = visibleSpec();
+    const ref_ptr<VoxelObject> expected =
+        VoxelObject::extract(*makeMovingSphere(kSide, 0.0), nullptr, spec);
+    SeriesCacheSettings settings;
+    settings.memoryBudget = 1; // everything but the shown step goes to disk
+    settings.prefetchSteps = 0;
+    SeriesCache cache(steps, sphereLoader(steps), settings);
+    cache.show(0, +1);
+    cache.voxelObject(0, spec)->renderList(2);
+    cache.show(1, +1);
+    cache.voxelObject(1, spec);
+    cache.waitUntilIdle();
+    REQUIRE(cache.isOnDisk(0, spec));
+    REQUIRE_FALSE(cache.isInMemory(0, spec));
+    int damaged = 0;
+    for (const auto& file : std::filesystem::directory_iterator(cache.diskFolder()))
+        if (file.path().filename().string().rfind("step-0-", 0) == 0) {
+            std::fstream out(file.path(), std::ios::binary | std::ios::in | std::ios::out);
+            out.seekp(std::streamoff(file.file_size() / 2));
+            out.write("\x5a\xa5\x5a", 3);
+            ++damaged;
+        }
+    REQUIRE(damaged == 1);
+    const std::uint64_t extractionsBefore = cache.stats().extractions;
+    cache.show(0, -1);
+    const ref_ptr<VoxelObject> back = cache.voxelObject(0, spec);
+    CHECK(sameArrays(*back, *expected));
+    CHECK(sameRenderList(*back, *expected, 2));
+    const SeriesCacheStats stats = cache.stats();
+    CHECK(stats.damagedFiles == 1u);
+    CHECK(stats.extractions == extractionsBefore + 1);
+}
+
 TEST_CASE("every step survives eviction and spill under a small budget, bit for bit") {
     constexpr int steps = 12;
     const ExtractionSpec spec = visibleSpec();
@@ -139,9 +231,12 @@ TEST_CASE("every step survives eviction and spill under a small budget, bit for 
         CHECK(sameRenderList(*back, *expected[s], 2));
     }
     cache.waitUntilIdle();
+    const std::uint64_t sortsForward = stats.renderListSorts;
     stats = cache.stats();
     CHECK(stats.extractions == std::uint64_t(steps));
     CHECK(stats.diskReads >= std::uint64_t(steps - 4));
+    // Read-backs adopt the spilled lists: the backward pass sorted none.
+    CHECK(stats.renderListSorts == sortsForward);
     CHECK(stats.memoryHighWater <= settings.memoryBudget + 2 * largest);
 }
 

@@ -26,6 +26,14 @@ std::string makeDiskFolder(const std::string& parent) {
     return pattern;
 }
 
+/// Bit a set: the object has its RenderList for axis a.
+unsigned listMaskOf(const VoxelObject& object) {
+    unsigned mask = 0;
+    for (int axis = 0; axis < 3; ++axis)
+        if (object.hasRenderList(axis)) mask |= 1u << axis;
+    return mask;
+}
+
 std::size_t gridBytesOf(const SeriesStepVolume& v) {
     return (v.data ? v.data->byteSize() : 0) + (v.tags ? v.tags->byteSize() : 0);
 }
@@ -177,6 +185,19 @@ ref_ptr<VoxelObject> SeriesCache::voxelObject(int step, const ExtractionSpec& sp
     }
 }
 
+int SeriesCache::nextStep() const {
+    std::lock_guard lock(mutex_);
+    const int next = shown_ + (direction_ < 0 ? -1 : 1);
+    if (settings_.loop) return ((next % stepCount_) + stepCount_) % stepCount_;
+    return next >= 0 && next < stepCount_ ? next : -1;
+}
+
+SeriesStepVolume SeriesCache::peekVolume(int step) const {
+    std::lock_guard lock(mutex_);
+    const auto it = grids_.find(step);
+    return it == grids_.end() ? SeriesStepVolume{} : it->second;
+}
+
 std::optional<glm::dvec3> SeriesCache::knownExtent(int step) const {
     std::lock_guard lock(mutex_);
     if (const auto it = grids_.find(step); it != grids_.end()) return it->second.data->extent();
@@ -306,20 +327,38 @@ ref_ptr<VoxelObject> SeriesCache::produceLocked(const Key& key, const Extraction
     ListEntry& entry = lists_[key];
     entry.busy = true;
     const int axis = byWorker ? viewAxis_ : -1;
-    const bool fromDisk = entry.diskBytes > 0;
+    bool fromDisk = entry.diskBytes > 0;
     try {
         ref_ptr<VoxelObject> object;
         if (fromDisk) {
+            // The file holds the RenderLists too: a read-back step is drawn without a sort.
             const std::string path = pathOf(key);
             lock.unlock();
-            object = readSpillFile(path);
-        } else {
+            try {
+                object = readSpillFile(path);
+            } catch (const Error&) {
+                std::remove(path.c_str()); // damaged or of another version: extract again
+            }
+            lock.lock();
+            if (!object) {
+                stats_.diskBytes -= entry.diskBytes;
+                entry.diskBytes = 0;
+                entry.diskLists = 0;
+                ++stats_.damagedFiles;
+                fromDisk = false;
+            }
+        }
+        if (!object) {
             const SeriesStepVolume volume = gridLocked(key.first, lock);
             lock.unlock();
             object = VoxelObject::extract(*volume.data, volume.tags.get(), spec);
+        } else {
+            lock.unlock();
         }
-        if (axis >= 0) object->renderList(axis); // prefetched: ready to draw without a sort
+        const bool sort = axis >= 0 && !object->hasRenderList(axis);
+        if (sort) object->renderList(axis); // prefetched: ready to draw without a sort
         lock.lock();
+        if (sort) ++stats_.renderListSorts;
         ++(fromDisk ? stats_.diskReads : stats_.extractions);
         entry.busy = false;
         addMemory(entry, object);
@@ -359,7 +398,11 @@ bool SeriesCache::spillOne(std::unique_lock<std::mutex>& lock) {
     }
     if (victim == lists_.end()) return false; // only the shown step is left: it stays
     ListEntry& entry = victim->second;
-    if (std::get<0>(best) == 0 || entry.diskBytes > 0 || diskFailed_) {
+    // A disk copy without a RenderList built since it was read back is written again, so
+    // that reading it back once more costs no sort either.
+    const bool diskCopyComplete =
+        entry.diskBytes > 0 && (listMaskOf(*entry.object) & ~entry.diskLists) == 0;
+    if (std::get<0>(best) == 0 || diskCopyComplete || diskFailed_) {
         // Unwanted (a stale key), or already on disk, or no disk: memory goes, nothing is
         // lost (a missing list is extracted again from the step's data when asked for).
         dropMemory(entry);
@@ -372,6 +415,7 @@ bool SeriesCache::spillOne(std::unique_lock<std::mutex>& lock) {
     const int step = victim->first.first;
     lock.unlock();
     std::size_t written = 0;
+    const unsigned lists = listMaskOf(*object); // a list built meanwhile is written too
     try {
         written = writeSpillFile(path, *object);
     } catch (const Error&) {
@@ -381,9 +425,11 @@ bool SeriesCache::spillOne(std::unique_lock<std::mutex>& lock) {
     entry.busy = false;
     if (written == 0) {
         diskFailed_ = true; // from now on evicted lists are dropped, not spilled
+        // A failed rewrite leaves the older copy (the rename never happened): still whole.
     } else {
+        stats_.diskBytes = stats_.diskBytes - entry.diskBytes + written;
         entry.diskBytes = written;
-        stats_.diskBytes += written;
+        entry.diskLists = lists;
         ++stats_.spills;
     }
     if (step != shown_) dropMemory(entry);
@@ -408,6 +454,7 @@ bool SeriesCache::prefetchOne(std::unique_lock<std::mutex>& lock) {
                     lock.unlock();
                     object->renderList(axis);
                     lock.lock();
+                    ++stats_.renderListSorts;
                     e.busy = false;
                     if (e.object == object) {
                         const std::size_t bytes = object->memoryBytes();

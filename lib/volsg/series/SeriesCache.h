@@ -41,15 +41,17 @@ struct SeriesCacheSettings {
 };
 
 struct SeriesCacheStats {
-    std::uint64_t extractions = 0;   ///< voxel-list extractions (any thread)
-    std::uint64_t gridLoads = 0;     ///< steps loaded or generated
-    std::uint64_t spills = 0;        ///< lists written to disk
-    std::uint64_t diskReads = 0;     ///< lists read back from disk
-    std::uint64_t memoryHits = 0;    ///< requests answered from memory
-    std::uint64_t waits = 0;         ///< requests that waited for the worker's work in flight
-    std::size_t memoryBytes = 0;     ///< voxel lists in memory now
-    std::size_t memoryHighWater = 0; ///< largest memoryBytes seen
-    std::size_t gridBytes = 0;       ///< grids held now (shown step and prefetched ones)
+    std::uint64_t extractions = 0;     ///< voxel-list extractions (any thread)
+    std::uint64_t gridLoads = 0;       ///< steps loaded or generated
+    std::uint64_t spills = 0;          ///< lists written to disk
+    std::uint64_t diskReads = 0;       ///< lists read back from disk
+    std::uint64_t memoryHits = 0;      ///< requests answered from memory
+    std::uint64_t waits = 0;           ///< requests that waited for the worker's work in flight
+    std::uint64_t renderListSorts = 0; ///< RenderLists the cache sorted (read-backs adopt theirs)
+    std::uint64_t damagedFiles = 0;    ///< spill files refused on read (the step is re-extracted)
+    std::size_t memoryBytes = 0;       ///< voxel lists in memory now
+    std::size_t memoryHighWater = 0;   ///< largest memoryBytes seen
+    std::size_t gridBytes = 0;         ///< grids held now (shown step and prefetched ones)
     std::size_t gridHighWater = 0;
     std::size_t diskBytes = 0; ///< bytes in the disk tier
 };
@@ -85,6 +87,13 @@ public:
     /// Registers `spec` as wanted: the worker prefetches it for the next steps.
     ref_ptr<VoxelObject> voxelObject(int step, const ExtractionSpec& spec);
 
+    /// The step play shows after the shown one: in the direction of play (forward when
+    /// paused), wrapping when looping; -1 past either end without loop.
+    int nextStep() const;
+    /// The grids of `step` if they are in memory now (shown or prefetched), else empty; never
+    /// loads (the texture path stages the next step's upload only when it is ready).
+    SeriesStepVolume peekVolume(int step) const;
+
     /// The local extent (dimensions * spacing) of a step if known without loading: from its
     /// grid or its lists in memory.
     std::optional<glm::dvec3> knownExtent(int step) const;
@@ -109,6 +118,7 @@ private:
         ref_ptr<VoxelObject> object; ///< null: not in memory
         std::size_t bytes = 0;       ///< counted in memoryBytes while object is set
         std::size_t diskBytes = 0;   ///< > 0: a copy is on disk
+        unsigned diskLists = 0;      ///< bit a: the disk copy holds the RenderList of axis a
         bool busy = false;           ///< a thread is extracting, reading or writing it
         std::uint64_t lastUse = 0;
     };

@@ -1,6 +1,9 @@
 #pragma once
 // One extracted voxel object in a file of the series' disk cache: the extracted arrays
-// (VoxelObject::Arrays) as they are in memory, so reading gives the object back bit for bit.
+// (VoxelObject::Arrays) and every RenderList built so far, as they are in memory (sorted,
+// clipped and optimized as they were), so reading gives the object back bit for bit and
+// drawing it costs no sort.
+#include <cstdint>
 #include <string>
 
 #include <volsg/core/Object.h>
@@ -9,12 +12,18 @@ namespace volsg {
 
 class VoxelObject;
 
-/// Writes `path.tmp` and renames it to `path`, so a file under `path` is always whole. No
-/// fsync: the disk cache lives only as long as the process. Throws Error naming the file.
-/// Returns the bytes written.
-std::size_t writeSpillFile(const std::string& path, const VoxelObject& object);
+/// The format version written; a file of another version is refused.
+constexpr std::uint32_t kSpillFileVersion = 2;
 
-/// Throws Error naming the file when it is missing, truncated, or not a spill file.
+/// Writes `path.tmp` and renames it to `path`, so a file under `path` is always whole. No
+/// fsync: the disk cache lives only as long as the process. Each RenderList is written under
+/// its own mutex (the optimizer may hold it). Throws Error naming the file. Returns the bytes
+/// written.
+std::size_t writeSpillFile(const std::string& path, VoxelObject& object);
+
+/// The object with the RenderLists the file holds (adopted, not rebuilt). Throws Error naming
+/// the file when it is missing, truncated, of another format version, damaged (checksum) or
+/// inconsistent.
 ref_ptr<VoxelObject> readSpillFile(const std::string& path);
 
 } // namespace volsg

@@ -1,6 +1,9 @@
 #include <volsg/shearwarp/RenderList.h>
 
 #include <algorithm>
+#include <string>
+
+#include <volsg/core/Error.h>
 
 #include <volsg/shearwarp/PackedVoxel.h>
 
@@ -9,6 +12,50 @@ namespace volsg {
 std::size_t RenderList::memoryBytes() const {
     return packed.size() * (sizeof(std::uint32_t) + 2 * sizeof(std::uint16_t) + 1) +
            entries.size() * sizeof(RenderListEntry);
+}
+
+bool RenderList::sameContent(const RenderList& other) const {
+    return axis == other.axis && packed == other.packed && value12 == other.value12 &&
+           gradientCode == other.gradientCode && magnitude8 == other.magnitude8 &&
+           entries == other.entries && clipKey == other.clipKey && tableKey == other.tableKey &&
+           unclippedLayout == other.unclippedLayout && clippedLayout == other.clippedLayout &&
+           contributesUnclipped == other.contributesUnclipped &&
+           contributesClipped == other.contributesClipped;
+}
+
+void RenderList::checkConsistent(std::size_t voxelCount, const glm::ivec3& dimensions) const {
+    auto fail = [](const std::string& what) { throw Error("RenderList: " + what); };
+    if (axis < 0 || axis > 2) fail("axis must be 0, 1 or 2");
+    if (packed.size() != voxelCount || value12.size() != voxelCount ||
+        gradientCode.size() != voxelCount || magnitude8.size() != voxelCount)
+        fail("arrays differ from the object's " + std::to_string(voxelCount) + " voxels");
+    const std::size_t maskSize = std::size_t(1) << 16;
+    for (const auto* mask : {&contributesUnclipped, &contributesClipped})
+        if (!mask->empty() && mask->size() != maskSize) fail("contribution mask of wrong size");
+    for (const PackedLayout layout : {unclippedLayout, clippedLayout})
+        if (layout != PackedLayout::ValueMagnitude && layout != PackedLayout::GradientValue)
+            fail("unknown packed layout");
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    std::uint32_t next = 0;
+    int lastSlice = -1;
+    for (const RenderListEntry& e : entries) {
+        if (e.first != next || e.first > e.last || e.last > e.firstClipped ||
+            e.firstClipped > e.lastClipped || e.lastClipped > e.lastInSlice)
+            fail("entry ranges out of order");
+        if (e.slice() < lastSlice || e.slice() >= dimensions[axis] || e.offset.x >= dimensions[a] ||
+            e.offset.y >= dimensions[b] || (e.offset.x & 0xFF) != 0 || (e.offset.y & 0xFF) != 0 ||
+            (e.offset.z & 0xFF) != 0)
+            fail("entry outside the object's dimensions");
+        if (e.lastInSlice > voxelCount) fail("entries do not cover the voxels");
+        const unsigned spanA = unsigned(dimensions[a] - e.offset.x);
+        const unsigned spanB = unsigned(dimensions[b] - e.offset.y);
+        for (std::uint32_t i = e.first; i < e.lastInSlice; ++i)
+            if (PackedVoxel::a(packed[i]) >= spanA || PackedVoxel::b(packed[i]) >= spanB)
+                fail("voxel outside the object's dimensions");
+        lastSlice = e.slice();
+        next = e.lastInSlice;
+    }
+    if (next != voxelCount) fail("entries do not cover the voxels");
 }
 
 glm::ivec3 RenderList::position(const RenderListEntry& entry, std::size_t index) const {

@@ -21,6 +21,7 @@ struct RenderListEntry {
     std::uint32_t first = 0, firstClipped = 0, last = 0, lastClipped = 0, lastInSlice = 0;
     bool optimized = false; ///< the optimizer has classified it under the current tables
     int slice() const { return int(offset.z) + int(z); }
+    bool operator==(const RenderListEntry&) const = default;
 };
 
 /// Which voxel attributes fill the 16 attribute bits of the packed words (RTVR figure 5):
@@ -56,6 +57,14 @@ public:
 
     std::size_t voxelCount() const { return packed.size(); }
     std::size_t memoryBytes() const;
+
+    /// Same voxels, attributes, entries, keys, layouts and masks: everything but the mutex and
+    /// scratch space (a list read back from the series' disk cache is this to the one written).
+    bool sameContent(const RenderList& other) const;
+    /// Throws Error unless every array holds `voxelCount` voxels, the entries tile them in
+    /// slice order with ordered ranges inside `dimensions`, and the masks are empty or full:
+    /// what a list read from outside the process must satisfy before it is drawn.
+    void checkConsistent(std::size_t voxelCount, const glm::ivec3& dimensions) const;
 
     /// Index-space position (i, j, k) of the voxel at `index` of `entry`.
     glm::ivec3 position(const RenderListEntry& entry, std::size_t index) const;

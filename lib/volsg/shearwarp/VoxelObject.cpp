@@ -188,8 +188,22 @@ RenderList& VoxelObject::renderList(int axis) {
         auto built = std::make_unique<RenderList>();
         build(*built, axis);
         list = std::move(built);
+        ++builds_;
     }
     return *list;
+}
+
+void VoxelObject::adoptRenderList(std::unique_ptr<RenderList> list) {
+    if (!list) throw Error("no RenderList to adopt");
+    list->checkConsistent(i_.size(), dimensions_);
+    std::lock_guard lock(buildMutex_);
+    auto& slot = lists_[std::size_t(list->axis)];
+    if (!slot) slot = std::move(list);
+}
+
+unsigned VoxelObject::renderListBuilds() const {
+    std::lock_guard lock(buildMutex_);
+    return builds_;
 }
 
 VoxelObject::Arrays VoxelObject::arrays() const {

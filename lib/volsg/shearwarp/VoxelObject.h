@@ -65,6 +65,12 @@ public:
     /// The RenderList for principal axis 0, 1 or 2, built on first use (thread-safe).
     RenderList& renderList(int axis);
     bool hasRenderList(int axis) const;
+    /// Takes a RenderList kept outside the object (the series' disk cache) for its axis
+    /// instead of sorting one; an existing list of that axis stays. Throws Error when the list
+    /// does not fit the object (RenderList::checkConsistent).
+    void adoptRenderList(std::unique_ptr<RenderList> list);
+    /// RenderLists this object sorted itself (adopted ones do not count).
+    unsigned renderListBuilds() const;
     /// Extracted voxels plus every RenderList built so far.
     std::size_t memoryBytes() const;
 
@@ -94,6 +100,7 @@ private:
     std::vector<std::uint8_t> magnitude8_;
     mutable std::mutex buildMutex_;
     std::array<std::unique_ptr<RenderList>, 3> lists_;
+    unsigned builds_ = 0; // guarded by buildMutex_
     void build(RenderList& list, int axis) const;
 };
 
