@@ -3,6 +3,13 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
 
 #include <volsg/editors/ActiveObjectDrag.h>
 #include <volsg/editors/EditHistory.h>
@@ -104,7 +111,7 @@ TEST_CASE("the field panel lists every field with its widget and sets values fro
     CHECK(volume->planeOpacity.isDefault());
 }
 
-TEST_CASE("picking finds the shape or the volume box under the ray") {
+TEST_CASE("picking finds the shape or the volume content under the ray") {
     ref_ptr<Node> root = readSceneFromString(twoObjects);
     const auto cube = pickScene(*root, Ray{{-3.0, 0.0, 10.0}, {0.0, 0.0, -1.0}});
     REQUIRE(cube.has_value());
@@ -115,11 +122,118 @@ TEST_CASE("picking finds the shape or the volume box under the ray") {
     REQUIRE(volume.has_value());
     CHECK(volume->node == named(*root, "volume"));
     CHECK(volume->isVolume);
-    CHECK(volume->distance == doctest::Approx(9.0).epsilon(1e-9)); // box face at z = 1
+    // Not the box face at z = 1 but the content: the soft sphere's value 1 - r / 0.9 (radius
+    // 0.45 of the box) reaches the identity ramp's alpha 0.02 at r = 0.882, so at
+    // z = sqrt(0.882^2 - 0.5) = 0.546 on this ray (within half a voxel, 1/16).
+    const double z = std::sqrt(0.882 * 0.882 - 0.5);
+    CHECK(std::abs(volume->distance - (10.0 - z)) < 0.0625);
+    CHECK(std::abs(volume->point.z - z) < 0.0625);
     CHECK_FALSE(pickScene(*root, Ray{{0.0, 0.0, 10.0}, {0.0, 0.0, -1.0}}).has_value());
     // The transfer function in the volume's scope is the one a drag edits.
     CHECK(nearestInScope(*root, *volume->node, TransferFunction::classType()) ==
           named(*root, "tf"));
+}
+
+namespace {
+// A 32^3 UByte volume (spacing 1/16: a 2-unit box about the origin) holding 255 in the voxels
+// whose centres lie within 0.5 of the centre and 0 elsewhere (tag 1 within 0.75, so that the
+// data's whole rise from 0 to 1 lies in tag-1 cells; tags are nearest-neighbour), with
+// an alpha step at v = 0.5: the visible surface is the sphere of radius 0.5 to within the
+// voxel sampling. `extra` goes before the VolumeData; `behind` after the volume's Separator.
+struct OpaqueSphere {
+    std::filesystem::path dir;
+    OpaqueSphere() {
+        dir = std::filesystem::temp_directory_path() / ("volsg-pick-" + std::to_string(getpid()));
+        std::filesystem::create_directories(dir);
+        std::vector<std::uint8_t> data(32 * 32 * 32), tags(data.size());
+        for (int k = 0; k < 32; ++k)
+            for (int j = 0; j < 32; ++j)
+                for (int i = 0; i < 32; ++i) {
+                    const glm::dvec3 c = (glm::dvec3(i, j, k) + 0.5) / 16.0 - 1.0;
+                    const bool inside = glm::length(c) <= 0.5;
+                    data[std::size_t(i + 32 * (j + 32 * k))] = inside ? 255 : 0;
+                    tags[std::size_t(i + 32 * (j + 32 * k))] = glm::length(c) <= 0.75 ? 1 : 0;
+                }
+        std::ofstream((dir / "sphere.raw").string(), std::ios::binary)
+            .write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
+        std::ofstream((dir / "tags.raw").string(), std::ios::binary)
+            .write(reinterpret_cast<const char*>(tags.data()), std::streamsize(tags.size()));
+    }
+    ~OpaqueSphere() { std::filesystem::remove_all(dir); }
+    ref_ptr<Node> scene(const std::string& extra, const std::string& behind = "",
+                        const std::string& tagLine = "") const {
+        return readSceneFromString("#Inventor V2.1 ascii\nSeparator {\n  Separator {\n" + extra +
+                                   "    VolumeData { fileName \"" + (dir / "sphere.raw").string() +
+                                   "\" dimensions 32 32 32 spacing 0.0625 0.0625 0.0625 " +
+                                   tagLine + "}\n" +
+                                   "    TransferFunction { alpha [ 0 0, 0.49 0, 0.51 1 ] }\n" +
+                                   "    DEF volume Volume { }\n  }\n" + behind + "}\n");
+    }
+    std::string tagFile() const { return "tagFileName \"" + (dir / "tags.raw").string() + "\" "; }
+};
+const char* cubeBehind = "  Separator { Transform { translation 0 0 -3 } DEF cube Cube { } }\n";
+const Ray down{{0.0, 0.0, 10.0}, {0.0, 0.0, -1.0}};
+const Ray corner{{0.9, 0.9, 10.0}, {0.0, 0.0, -1.0}}; // through the box, outside the sphere
+constexpr double halfVoxel = 1.0 / 32.0;
+} // namespace
+
+TEST_CASE("a volume is picked where its content becomes visible, not at its box") {
+    const OpaqueSphere sphere;
+    ref_ptr<Node> root = sphere.scene("");
+    // Through the box's corner only transparent voxels: no hit at all.
+    CHECK_FALSE(pickScene(*root, corner).has_value());
+    // Through the centre: the sphere's surface at z = 0.5, to half a voxel.
+    const auto hit = pickScene(*root, down);
+    REQUIRE(hit.has_value());
+    CHECK(hit->node == named(*root, "volume"));
+    CHECK(hit->isVolume);
+    CHECK(std::abs(hit->distance - 9.5) < halfVoxel);
+    CHECK(std::abs(hit->point.z - 0.5) < halfVoxel);
+    // From the side, through the transformed volume: the same surface, in world coordinates.
+    ref_ptr<Node> moved = sphere.scene("    Transform { translation 5 0 0 }\n");
+    const auto side = pickScene(*moved, Ray{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}});
+    REQUIRE(side.has_value());
+    CHECK(std::abs(side->point.x - 4.5) < halfVoxel);
+}
+
+TEST_CASE("a clipped part of a volume is not picked: ClipPlane and BoxClip") {
+    const OpaqueSphere sphere;
+    // Only z <= 0 is kept: the ray meets the opaque inside at the cut, z = 0, exactly.
+    ref_ptr<Node> planes = sphere.scene("    ClipPlane { plane 0 0 -1 0 }\n");
+    const auto clipped = pickScene(*planes, down);
+    REQUIRE(clipped.has_value());
+    CHECK(clipped->distance == doctest::Approx(10.0).epsilon(1e-9));
+    ref_ptr<Node> box =
+        sphere.scene("    BoxClip { origin -1 -1 -1 extent 2 2 1 outsideOpacity 0 }\n");
+    const auto boxed = pickScene(*box, down);
+    REQUIRE(boxed.has_value());
+    CHECK(boxed->distance == doctest::Approx(10.0).epsilon(1e-9));
+    // Cutting away the whole sphere leaves nothing to pick.
+    ref_ptr<Node> gone = sphere.scene("    ClipPlane { plane 0 0 1 0.6 }\n");
+    CHECK_FALSE(pickScene(*gone, down).has_value());
+}
+
+TEST_CASE("the shape behind a transparent part of a volume is picked instead of the volume") {
+    const OpaqueSphere sphere;
+    ref_ptr<Node> root = sphere.scene("", cubeBehind);
+    // Through the box's corner: the volume is transparent there, the cube (front face z = -2)
+    // is what the click selects.
+    const auto behind = pickScene(*root, corner);
+    REQUIRE(behind.has_value());
+    CHECK(behind->node == named(*root, "cube"));
+    CHECK_FALSE(behind->isVolume);
+    CHECK(behind->distance == doctest::Approx(12.0).epsilon(1e-9));
+    // Through the centre the sphere is in front of the cube.
+    const auto front = pickScene(*root, down);
+    REQUIRE(front.has_value());
+    CHECK(front->node == named(*root, "volume"));
+    // Tags are honoured: a transfer function making tag 1 (the sphere) transparent leaves only
+    // the cube.
+    ref_ptr<Node> tagged = sphere.scene("    TransferFunction { tag 1 alpha [ 0 0, 1 0 ] }\n",
+                                        cubeBehind, sphere.tagFile());
+    const auto through = pickScene(*tagged, down);
+    REQUIRE(through.has_value());
+    CHECK(through->node == named(*tagged, "cube"));
 }
 
 TEST_CASE("dragging a volume up makes it more opaque and right raises its contrast") {

@@ -1,51 +1,65 @@
 #include <volsg/editors/ScenePicker.h>
 
+#include <algorithm>
+
 #include <volsg/actions/PickAction.h>
-#include <volsg/manipulators/DragMath.h>
 #include <volsg/nodes/Camera.h> // PickAction holds a ref_ptr<Camera>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Volume.h>
-#include <volsg/nodes/VolumeData.h>
+#include <volsg/reference/ReferenceRayCaster.h>
+#include <volsg/volumescene/ReferenceScene.h>
 
 namespace volsg {
 
 namespace {
 
-/// Visits the graph as a render would, meeting each Volume with its VolumeData in scope.
-class VolumeBoxPickAction final : public Action {
+/// Visits the graph as a render would and picks each Volume (and ShearWarpVolume) by its
+/// content: the first point along the ray where the reference ray caster's classification of
+/// the volume's data is visible (ReferenceRayCaster::firstVisibleDistance).
+class VolumeContentPickAction final : public Action {
 public:
-    VolumeBoxPickAction(const Ray& ray, double nearDistance, double farDistance)
+    VolumeContentPickAction(const Ray& ray, double nearDistance, double farDistance)
         : ray_(ray), near_(nearDistance), far_(farDistance) {}
     std::optional<ScenePick> hit;
 
 protected:
     void dispatch(Node& node) override {
-        if (!node.isA<Volume>()) {
-            node.doAction(*this);
-            return;
+        // As collectVolumes() does: a ShearWarpVolume before its doAction (its children are
+        // its state), a Volume after.
+        if (node.isA<ShearWarpVolume>()) {
+            std::optional<RayCastVolume> volume;
+            try {
+                volume = static_cast<ShearWarpVolume&>(node).describeForReference(state());
+            } catch (const std::exception&) {
+                // data that does not load is not drawn, so not picked
+            }
+            if (volume) consider(node, *volume);
         }
-        const VolumeData* data = state().nearestNode<VolumeData>();
-        if (!data) return;
-        ref_ptr<const VolumeGrid> grid;
-        try {
-            grid = data->grid();
-        } catch (const std::exception&) {
-            return; // data that does not load is not drawn, so not picked
+        node.doAction(*this);
+        if (node.isA<Volume>()) {
+            std::optional<RayCastVolume> volume;
+            try {
+                volume = describeVolume(static_cast<const Volume&>(node), state());
+            } catch (const std::exception&) {
+                // no VolumeData in scope, or data that does not load: nothing drawn to pick
+            }
+            if (volume && volume->data) consider(node, *volume);
         }
-        if (!grid) return;
-        const glm::dvec3 half = 0.5 * grid->extent();
-        Box3 box;
-        box.extendBy(-half);
-        box.extendBy(half);
-        const glm::dmat4 model = state().modelMatrix();
-        const auto boxHit = intersectRayBox(ray_.transformed(glm::inverse(model)), box);
-        if (!boxHit) return;
-        const glm::dvec3 point = ray_.at(boxHit->t); // t is preserved by the transform
-        const double distance = glm::length(point - ray_.origin);
-        if (distance < near_ || distance > far_ || (hit && hit->distance <= distance)) return;
-        hit = ScenePick{&node, path(), point, distance, true};
     }
 
 private:
+    void consider(Node& node, const RayCastVolume& volume) {
+        const double farthest = hit ? std::min(far_, hit->distance) : far_;
+        std::optional<double> distance;
+        try {
+            distance = ReferenceRayCaster::firstVisibleDistance(volume, ray_, near_, farthest);
+        } catch (const std::exception&) {
+            return; // a volume the reference cannot describe (singular model, ...)
+        }
+        if (!distance || (hit && hit->distance <= *distance)) return;
+        hit = ScenePick{&node, path(), ray_.at(*distance), *distance, true};
+    }
+
     Ray ray_;
     double near_, far_;
 };
@@ -84,7 +98,7 @@ std::optional<ScenePick> pickScene(Node& root, const Ray& worldRay, double nearD
     PickAction shapes;
     shapes.setRay(ray, nearDistance, farDistance);
     shapes.apply(root);
-    VolumeBoxPickAction volumes(ray, nearDistance, farDistance);
+    VolumeContentPickAction volumes(ray, nearDistance, farDistance);
     volumes.apply(root);
     std::optional<ScenePick> best = volumes.hit;
     if (const auto& p = shapes.picked(); p && !p->path.empty()) {

@@ -1,7 +1,7 @@
 #pragma once
-// What is under the mouse: the nearest shape (PickAction) or volume box along a world ray, so
-// that clicking selects any object of the scene, volumes included (RTVR's "click an object to
-// make it active").
+// What is under the mouse: the nearest shape (PickAction) or visible volume content along a
+// world ray, so that clicking selects any object of the scene, volumes included (RTVR's "click
+// an object to make it active").
 
 #include <optional>
 #include <vector>
@@ -20,7 +20,12 @@ struct ScenePick {
 };
 
 /// The nearest hit along `worldRay` (its direction need not be unit) among shapes and the
-/// boxes of Volume nodes (with the VolumeData in their scope), between near and far.
+/// content of Volume and ShearWarpVolume nodes, between near and far. A volume is hit where it
+/// first becomes visible: where the opacity of its classified, trilinearly sampled data (the
+/// transfer functions in scope, tags honoured, BoxClip opacity and ClipPlanes applied) over one
+/// smallest voxel spacing reaches ReferenceRayCaster::kPickOpacity (0.02), as
+/// ReferenceRayCaster::firstVisibleDistance() defines it. A ray through the volume's box that
+/// meets only transparent voxels misses the volume and hits what lies behind.
 std::optional<ScenePick> pickScene(Node& root, const Ray& worldRay, double nearDistance = 0.0,
                                    double farDistance = 1e300);
 

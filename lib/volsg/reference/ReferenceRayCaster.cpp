@@ -339,7 +339,8 @@ void prepareBricks(PreparedVolume& out, int brickSize) {
 }
 
 PreparedVolume prepareVolume(const RayCastVolume& in, const CameraFrame& frame,
-                             const RayCastOptions& options, std::size_t number) {
+                             const RayCastOptions& options, std::size_t number,
+                             bool withBricks = true) {
     const std::string which = "volume " + std::to_string(number) + ": ";
     if (!in.data) throw Error(which + "no data grid");
     const VolumeGrid& grid = *in.data;
@@ -393,7 +394,7 @@ PreparedVolume prepareVolume(const RayCastVolume& in, const CameraFrame& frame,
         out.blendWeight[0] = std::clamp(b.outsideColorWeight, 0.0, 1.0);
         out.blendWeight[1] = std::clamp(b.insideColorWeight, 0.0, 1.0);
     }
-    if (out.mode == VolumeRenderMode::DVR) prepareBricks(out, options.brickSize);
+    if (out.mode == VolumeRenderMode::DVR && withBricks) prepareBricks(out, options.brickSize);
     return out;
 }
 
@@ -535,6 +536,59 @@ public:
         }
         applyLayersUpTo(kInfinity);
         return {light + T * behind, T};
+    }
+
+    /// Volume i's first point on the ray whose opacity per L0, 1 - (1 - A)^m, reaches
+    /// `threshold` (ReferenceRayCaster::firstVisibleDistance).
+    std::optional<double> firstVisible(std::size_t i, double threshold) {
+        const PreparedVolume& V = volumes_[i];
+        const VolumeOnRay& R = rays_[i];
+        if (!R.hit) return std::nullopt;
+        // Pieces on which the data is one smooth cubic of s, with one tag and one region.
+        events_.clear();
+        events_.push_back(R.enter);
+        events_.push_back(R.exit);
+        for (int a = 0; a < 3; ++a) {
+            if (!V.slotOfVoxel.empty())
+                for (int c = 1; c < V.dims[a]; ++c)
+                    addPlane(R, a, -V.halfExtent[a] + c * V.spacing[a]);
+            for (int c = 0; c < V.dims[a]; ++c)
+                addPlane(R, a, -V.halfExtent[a] + (c + 0.5) * V.spacing[a]);
+        }
+        addInside(R, R.clipEnter);
+        addInside(R, R.clipExit);
+        std::sort(events_.begin(), events_.end());
+        for (std::size_t e = 0; e + 1 < events_.size(); ++e) {
+            const double s0 = events_[e], s1 = events_[e + 1];
+            if (!(s1 > s0)) continue;
+            const double mid = 0.5 * (s0 + s1);
+            const double m = V.opacity[R.region(mid)];
+            if (m == 0.0) continue;
+            const PreparedTransferFunction& tf =
+                V.transferFunctions[std::size_t(V.slotAt(R.localAt(mid)))];
+            auto visible = [&](double s) {
+                const double v = tf.normalise(V.sample(R.localAt(s)));
+                const double A = std::clamp(tf.alpha(v), 0.0, kMaxOpacity);
+                return 1.0 - std::pow(1.0 - A, m) >= threshold;
+            };
+            if (visible(s0)) return s0;
+            const long n = stepCount(s1 - s0, R.step / 8.0, 0);
+            double a = s0;
+            for (long j = 1; j <= n; ++j) {
+                double b = j == n ? s1 : s0 + (s1 - s0) * double(j) / double(n);
+                if (!visible(b)) {
+                    a = b;
+                    continue;
+                }
+                const double tolerance = 1e-9 * R.step;
+                while (b - a > tolerance) {
+                    const double c = 0.5 * (a + b);
+                    (visible(c) ? b : a) = c;
+                }
+                return b;
+            }
+        }
+        return std::nullopt;
     }
 
 private:
@@ -845,6 +899,27 @@ double ReferenceRayCaster::rayDistanceFromWindowDepth(const RayCastCamera& camer
     const glm::dvec2 ndc = pixelCentreNdc(frame, x, y);
     const glm::dvec3 p = unproject(frame, ndc.x, ndc.y, 2.0 * windowDepth - 1.0);
     return glm::dot(p - ray.origin, ray.dir);
+}
+
+std::optional<double> ReferenceRayCaster::firstVisibleDistance(const RayCastVolume& volume,
+                                                               const Ray& ray, double nearDistance,
+                                                               double farDistance,
+                                                               double threshold) {
+    const double length = glm::length(ray.direction);
+    if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
+    CameraFrame frame; // only planeOpacity's depths use it, and picking leaves them out
+    frame.eye = ray.origin;
+    frame.forward = ray.direction / length;
+    const std::vector<PreparedVolume> volumes = {
+        prepareVolume(volume, frame, RayCastOptions{}, 0, false)};
+    PixelRay pixel;
+    pixel.origin = ray.origin;
+    pixel.dir = frame.forward;
+    pixel.start = std::max(nearDistance, 0.0);
+    pixel.end = farDistance;
+    RayTracer tracer(volumes, frame);
+    if (!tracer.setup(pixel, kInfinity)) return std::nullopt;
+    return tracer.firstVisible(0, threshold);
 }
 
 RayCastResult ReferenceRayCaster::render(const RayCastScene& scene) const {

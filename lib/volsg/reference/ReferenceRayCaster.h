@@ -167,6 +167,24 @@ public:
     static double rayDistanceFromWindowDepth(const RayCastCamera& camera, int x, int y,
                                              double windowDepth);
 
+    /// The opacity threshold of firstVisibleDistance(): ShearWarpVolume::pickAt's alpha 0.02.
+    static constexpr double kPickOpacity = 0.02;
+    /// Where `ray` (world; its direction need not be unit) first meets VISIBLE content of
+    /// `volume`, for picking: the smallest distance s (world units along the unit direction)
+    /// in [nearDistance, farDistance], inside the volume box and on the kept side of its clip
+    /// planes, where the opacity of one step of length L0 (the smallest spacing, local units),
+    /// `1 - exp(-tau L0) = 1 - (1 - A)^m`, reaches `threshold`. A is the transfer function of
+    /// the voxel's tag at the trilinear data value, classified exactly as render() does; m is
+    /// the BoxClip opacity multiplier of the region (0 removes it). planeOpacity is left out
+    /// (it depends on the camera), and every mode is picked this way (a MIP volume too: a click
+    /// means the first visible content). The ray is sampled at most L0/8 (local) apart between
+    /// the voxel-centre and tag-cell planes and the crossing refined by bisection to 1e-9 of
+    /// that; none (nullopt) where nothing along the ray reaches the threshold. Throws Error for
+    /// invalid input as render() does.
+    static std::optional<double> firstVisibleDistance(const RayCastVolume& volume, const Ray& ray,
+                                                      double nearDistance, double farDistance,
+                                                      double threshold = kPickOpacity);
+
 private:
     RayCastOptions options_;
 };

@@ -30,52 +30,52 @@ protected:
             if (auto v = static_cast<ShearWarpVolume&>(node).describeForReference(state()))
                 volumes.push_back(std::move(*v));
         node.doAction(*this);
-        if (node.isA<Volume>()) volumes.push_back(describe(static_cast<const Volume&>(node)));
-    }
-
-private:
-    RayCastVolume describe(const Volume& volume) const {
-        const VolumeData* data = state().nearestNode<VolumeData>();
-        if (!data) throw Error("Volume without VolumeData in scope");
-        RayCastVolume out;
-        out.data = data->grid();
-        out.tags = data->tagGrid();
-        out.model = state().modelMatrix();
-        // Outermost first, so a later TransferFunction for the same tag replaces an earlier one.
-        for (const StateEntry* entry : state().all<TransferFunction>()) {
-            const auto& tf = static_cast<const TransferFunction&>(*entry->node);
-            if (tf.tag() < -1)
-                throw Error("TransferFunction tag must be -1 (every voxel) or >= 0, got " +
-                            std::to_string(tf.tag()));
-            out.transferFunctions.insert_or_assign(tf.tag(), tf.function());
-        }
-        out.mode = volume.mode();
-        for (const glm::vec2& p : volume.planeOpacity.getValues())
-            out.planeOpacity.push_back({double(p.x), double(p.y)});
-        if (const StateEntry* entry = state().nearest<BoxClip>()) {
-            const auto& clip = static_cast<const BoxClip&>(*entry->node);
-            RayCastBoxClip box;
-            // The box is in the BoxClip's own coordinates, which its model matrix maps to world.
-            box.origin = glm::dvec3(clip.origin());
-            box.extent = glm::dvec3(clip.extent());
-            box.model = entry->model;
-            box.insideOpacity = clip.insideOpacity();
-            box.outsideOpacity = clip.outsideOpacity();
-            box.insideColor = glm::dvec3(clip.insideColor());
-            box.insideColorWeight = clip.insideColorWeight();
-            box.outsideColor = glm::dvec3(clip.outsideColor());
-            box.outsideColorWeight = clip.outsideColorWeight();
-            out.boxClip = box;
-        }
-        // ClipPlane::doAction puts only planes that are on in scope.
-        for (const StateEntry* entry : state().all<ClipPlane>())
-            out.clipPlanes.push_back(ClipPlane::worldPlane(
-                static_cast<const ClipPlane&>(*entry->node).plane(), entry->model));
-        return out;
+        if (node.isA<Volume>())
+            volumes.push_back(describeVolume(static_cast<const Volume&>(node), state()));
     }
 };
 
 } // namespace
+
+RayCastVolume describeVolume(const Volume& volume, const State& state) {
+    const VolumeData* data = state.nearestNode<VolumeData>();
+    if (!data) throw Error("Volume without VolumeData in scope");
+    RayCastVolume out;
+    out.data = data->grid();
+    out.tags = data->tagGrid();
+    out.model = state.modelMatrix();
+    // Outermost first, so a later TransferFunction for the same tag replaces an earlier one.
+    for (const StateEntry* entry : state.all<TransferFunction>()) {
+        const auto& tf = static_cast<const TransferFunction&>(*entry->node);
+        if (tf.tag() < -1)
+            throw Error("TransferFunction tag must be -1 (every voxel) or >= 0, got " +
+                        std::to_string(tf.tag()));
+        out.transferFunctions.insert_or_assign(tf.tag(), tf.function());
+    }
+    out.mode = volume.mode();
+    for (const glm::vec2& p : volume.planeOpacity.getValues())
+        out.planeOpacity.push_back({double(p.x), double(p.y)});
+    if (const StateEntry* entry = state.nearest<BoxClip>()) {
+        const auto& clip = static_cast<const BoxClip&>(*entry->node);
+        RayCastBoxClip box;
+        // The box is in the BoxClip's own coordinates, which its model matrix maps to world.
+        box.origin = glm::dvec3(clip.origin());
+        box.extent = glm::dvec3(clip.extent());
+        box.model = entry->model;
+        box.insideOpacity = clip.insideOpacity();
+        box.outsideOpacity = clip.outsideOpacity();
+        box.insideColor = glm::dvec3(clip.insideColor());
+        box.insideColorWeight = clip.insideColorWeight();
+        box.outsideColor = glm::dvec3(clip.outsideColor());
+        box.outsideColorWeight = clip.outsideColorWeight();
+        out.boxClip = box;
+    }
+    // ClipPlane::doAction puts only planes that are on in scope.
+    for (const StateEntry* entry : state.all<ClipPlane>())
+        out.clipPlanes.push_back(ClipPlane::worldPlane(
+            static_cast<const ClipPlane&>(*entry->node).plane(), entry->model));
+    return out;
+}
 
 std::vector<RayCastVolume> collectVolumes(Node& root) {
     VolumeCollector collector;

@@ -12,6 +12,9 @@
 
 namespace volsg {
 
+class State;
+class Volume;
+
 /// Every Volume node a render would draw, as the reference ray caster describes it (in
 /// traversal order), from the state at the node:
 /// - data and tags: the nearest VolumeData in scope; model: the model matrix at the Volume;
@@ -27,6 +30,11 @@ namespace volsg {
 /// broken scene from the error measurement), when a volume's data cannot be loaded, and for
 /// an invalid TransferFunction.
 std::vector<RayCastVolume> collectVolumes(Node& root);
+
+/// One Volume node as collectVolumes() describes it, from the state at the node (after its
+/// doAction): for whatever else walks a graph and needs the reference's view of a volume, such
+/// as picking a volume by its content. Throws Error as collectVolumes() does.
+RayCastVolume describeVolume(const Volume& volume, const State& state);
 
 /// The camera of a render of `root` with these options, as the ray caster takes it: the
 /// options' camera or findOrMakeCamera(), with Camera::projectionMatrix(width / height) as
