@@ -1,6 +1,7 @@
 #include <volsg/core/Error.h>
 #include <volsg/render/RenderTarget.h>
 
+#include <algorithm>
 #include <string>
 
 namespace volsg {
@@ -26,6 +27,47 @@ void RenderTarget::resize(int width, int height) {
     framebuffer_.requireComplete("render target");
     width_ = width;
     height_ = height;
+}
+
+int RenderTarget::setMultisample(int samples) {
+    if (samples > 1) {
+        GLint maxSamples = 0, colorSamples = 0, depthSamples = 0;
+        glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+        glGetInternalformativ(GL_RENDERBUFFER, GL_RGBA32F, GL_SAMPLES, 1, &colorSamples);
+        glGetInternalformativ(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, GL_SAMPLES, 1, &depthSamples);
+        samples = std::min({samples, int(maxSamples), int(colorSamples), int(depthSamples)});
+    }
+    if (samples <= 1) {
+        multisampleFramebuffer_ = Framebuffer();
+        multisampleColor_ = Renderbuffer();
+        multisampleDepth_ = Renderbuffer();
+        samples_ = 0;
+        return 0;
+    }
+    if (samples == samples_ && multisampleColor_.width() == width_ &&
+        multisampleColor_.height() == height_)
+        return samples_;
+    multisampleColor_ = Renderbuffer(GL_RGBA32F, width_, height_, samples);
+    multisampleDepth_ = Renderbuffer(GL_DEPTH_COMPONENT32F, width_, height_, samples);
+    if (!multisampleFramebuffer_) multisampleFramebuffer_ = Framebuffer::create();
+    multisampleFramebuffer_.attach(GL_COLOR_ATTACHMENT0, multisampleColor_);
+    multisampleFramebuffer_.attach(GL_DEPTH_ATTACHMENT, multisampleDepth_);
+    multisampleFramebuffer_.requireComplete("multisample render target");
+    samples_ = samples;
+    return samples_;
+}
+
+void RenderTarget::resolveMultisample() {
+    if (samples_ <= 1) {
+        bind();
+        return;
+    }
+    multisampleFramebuffer_.bind(GL_READ_FRAMEBUFFER);
+    framebuffer_.bind(GL_DRAW_FRAMEBUFFER);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_,
+                      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    bind();
 }
 
 } // namespace volsg

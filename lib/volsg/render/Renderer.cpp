@@ -151,7 +151,11 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     view.headlight = !survey.hasLight();
 
     target.resize(options.width, options.height);
-    target.bind();
+    const bool multisample = target.setMultisample(options.samples) > 1;
+    if (multisample)
+        target.bindMultisample();
+    else
+        target.bind();
     glViewport(0, 0, options.width, options.height);
     glDepthMask(GL_TRUE);
     glClearColor(options.background.r, options.background.g, options.background.b, 1.0f);
@@ -163,6 +167,8 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     RenderAction action(cache, shapes, target, view, options.interactive);
     action.setInteractivePlaneScale(options.interactivePlaneScale);
     for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
+        // The multisampled opaque pass is resolved into the target for everything after it.
+        if (pass == RenderPass::Volume && multisample) target.resolveMultisample();
         if (options.opaqueOnly && pass != RenderPass::Opaque) break;
         setPassState(pass);
         shapes.beginPass();

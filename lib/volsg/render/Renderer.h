@@ -25,6 +25,11 @@ struct RenderOptions {
     double interactivePlaneScale = 1.0;
     ref_ptr<Camera> camera;  ///< overrides the scene's camera when set (model matrix = identity)
     bool opaqueOnly = false; ///< only the Opaque pass: no volumes, no transparent shapes
+    /// Multisample antialiasing of the opaque pass: with samples > 1 it is drawn into a
+    /// multisampled float target (at most GL_MAX_SAMPLES, 4 on llvmpipe) whose colour and depth
+    /// are resolved into the frame's target before the volumes, which then composite against
+    /// the resolved depth; the transparent pass is drawn single-sampled. 0 or 1: off.
+    int samples = 0;
 };
 
 /// What a Renderer has done, for tests and the benchmark: a frame where nothing changed
