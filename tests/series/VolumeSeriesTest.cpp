@@ -10,6 +10,7 @@
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/TransferFunction.h>
+#include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeObject.h>
 #include <volsg/nodes/VolumeSeries.h>
 #include <volsg/render/Renderer.h>
@@ -17,6 +18,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -246,4 +248,57 @@ TEST_CASE("the Volume node shows the series' steps: the sphere moves to +x") {
         CHECK(std::abs(cx - (expectedCentre[i] - 0.5)) <= 1.0);
     }
     CHECK(series->cache().stats().gridLoads >= 2u);
+}
+
+namespace {
+
+/// A 3-step MOVING_SPHERE series (32^3) drawn by the Volume node, shown at `step`.
+std::string textureSeriesScene(int step) {
+    return "#Inventor V2.1 ascii\nSeparator {\n"
+           "  OrthographicCamera { position 0 0 5 height 2.5 nearDistance 1 farDistance 9 }\n"
+           "  VolumeSeries { timeGenerator MOVING_SPHERE dimensions 32 32 32 "
+           "spacing 0.0625 0.0625 0.0625 timeSteps 0 2 prefetch 1 step " +
+           std::to_string(step) +
+           " }\n"
+           "  TransferFunction { alpha [ 0 0, 0.05 0, 1 1 ] }\n"
+           "  Volume { }\n}\n";
+}
+
+} // namespace
+
+TEST_CASE("a staged texture upload renders the same image as a direct one, bit for bit") {
+    // Whole volume in one texture, and bricked (the slicer's texture-size hook: 32^3 in 12^3
+    // textures), so the staged buffer's per-brick offsets are exercised too.
+    for (const char* limit : {"", "12"}) {
+        CAPTURE(limit);
+        if (*limit) ::setenv("VOLSG_MAX_3D_TEXTURE_SIZE", limit, 1);
+        OSMesaContext context;
+        Renderer renderer;
+        const ref_ptr<Node> root = readSceneFromString(textureSeriesScene(0));
+        auto* series = findNode<VolumeSeries>(*root);
+        auto* volume = findNode<Volume>(*root);
+        renderer.render(*root, smallOptions()); // step 0, uploaded directly
+        CHECK(volume->slicingStats().stagedUploads == 0u);
+        for (int step = 1; step <= 2; ++step) {
+            CAPTURE(step);
+            series->cache().waitUntilIdle();        // the next step's grid is prefetched
+            renderer.render(*root, smallOptions()); // ... and staged after this frame
+            series->step = step;
+            const Image staged = renderer.render(*root, smallOptions());
+            const SlicingStats& stats = volume->slicingStats();
+            CHECK(stats.brickUploads >= 1u);
+            if (*limit) CHECK(stats.bricksTotal > 1);
+            CHECK(stats.stagedUploads == stats.brickUploads); // every upload came from the buffer
+
+            // The same step in a fresh renderer: its first frame uploads directly.
+            Renderer freshRenderer;
+            const ref_ptr<Node> freshRoot = readSceneFromString(textureSeriesScene(step));
+            const Image direct = freshRenderer.render(*freshRoot, smallOptions());
+            CHECK(findNode<Volume>(*freshRoot)->slicingStats().stagedUploads == 0u);
+            CHECK(findNode<Volume>(*freshRoot)->slicingStats().brickUploads == stats.brickUploads);
+            CHECK(centroidX(staged) > 0.0);              // the sphere is in the image
+            CHECK(maxDifference(staged, direct) == 0.0); // bit for bit
+        }
+        if (*limit) ::unsetenv("VOLSG_MAX_3D_TEXTURE_SIZE");
+    }
 }

@@ -35,8 +35,11 @@ struct SlicingStats {
 
     // Cumulative.
     std::uint64_t frames = 0;
-    std::uint64_t brickUploads = 0;         ///< brick textures sent to the GPU
-    std::uint64_t uploadedBytes = 0;        ///< their bytes
+    std::uint64_t brickUploads = 0;  ///< brick textures sent to the GPU
+    std::uint64_t uploadedBytes = 0; ///< their bytes
+    /// Of brickUploads, those read from a buffer staged before the grid was shown
+    /// (VolumeSlicer::stage: a VolumeSeries' next step).
+    std::uint64_t stagedUploads = 0;
     std::uint64_t transferTableBuilds = 0;  ///< transfer tables (and tag maps) baked and uploaded
     std::uint64_t preIntegrationBuilds = 0; ///< pre-integration tables baked and uploaded
 };

@@ -6,7 +6,10 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <memory>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -22,10 +25,12 @@
 #include <volsg/render/RenderTarget.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
+#include <volsg/slicing/BrickTexels.h>
 #include <volsg/slicing/DataFormat.h>
 #include <volsg/slicing/PreIntegrationTable.h>
 #include <volsg/slicing/ProxyPlaneCutter.h>
 #include <volsg/slicing/SliceShaders.h>
+#include <volsg/slicing/TextureStaging.h>
 #include <volsg/slicing/TransferTable.h>
 #include <volsg/volume/VolumeGrid.h>
 
@@ -247,9 +252,10 @@ struct VolumeTextures {
     std::vector<glm::vec3> vertices;
     ProxySlices slices;
     std::vector<int> order;
-    std::vector<std::uint8_t> scratch8;
-    std::vector<std::uint16_t> scratch16;
-    std::vector<float> scratchFloat;
+    std::vector<std::uint32_t> scratch; ///< converted texels of a brick (4-byte aligned)
+    /// The grid's bricks staged before it was shown (TextureStaging.h); dropped after the
+    /// first frame's uploads.
+    std::unique_ptr<StagedGrid> staged;
 
     SlicingStats totals;
 };
@@ -257,38 +263,12 @@ struct VolumeTextures {
 // ---------------------------------------------------------------------------------------------
 // Voxels of a brick
 
-template <class T> double replaced(T x, double lowest, double highest) {
-    if constexpr (std::is_same_v<T, float>) {
-        // As the reference: NaN and -Inf become the smallest finite value, +Inf the largest.
-        if (std::isnan(x) || x == -std::numeric_limits<float>::infinity()) return lowest;
-        if (x == std::numeric_limits<float>::infinity()) return highest;
-    }
-    (void)lowest;
-    (void)highest;
-    return double(x);
-}
-
-/// Calls f(value) for every voxel of the brick's texture, x fastest.
-template <class T, class F> void forEachVoxel(const VolumeGrid& grid, const Brick& b, F&& f) {
-    const auto src = grid.data<T>();
-    const glm::ivec3 d = grid.dimensions();
-    for (int k = 0; k < b.voxelCount.z; ++k)
-        for (int j = 0; j < b.voxelCount.y; ++j) {
-            const std::size_t row =
-                std::size_t(b.firstVoxel.x) +
-                std::size_t(d.x) * (std::size_t(b.firstVoxel.y + j) +
-                                    std::size_t(d.y) * std::size_t(b.firstVoxel.z + k));
-            for (int i = 0; i < b.voxelCount.x; ++i)
-                f(src[row + std::size_t(i)]);
-        }
-}
-
 template <class T>
 void dataRangeOf(const VolumeGrid& grid, const Brick& b, double lowest, double highest,
                  BrickState& out) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    forEachVoxel<T>(grid, b, [&](T x) {
-        const double d = replaced(x, lowest, highest);
+    forEachBrickVoxel<T>(grid, b, [&](T x) {
+        const double d = replacedValue(x, lowest, highest);
         lo = std::min(lo, d);
         hi = std::max(hi, d);
     });
@@ -298,7 +278,7 @@ void dataRangeOf(const VolumeGrid& grid, const Brick& b, double lowest, double h
 
 template <class T> void tagRangeOf(const VolumeGrid& grid, const Brick& b, BrickState& out) {
     int lo = std::numeric_limits<int>::max(), hi = std::numeric_limits<int>::min();
-    forEachVoxel<T>(grid, b, [&](T x) {
+    forEachBrickVoxel<T>(grid, b, [&](T x) {
         lo = std::min(lo, int(x));
         hi = std::max(hi, int(x));
     });
@@ -334,41 +314,24 @@ void measureBricks(VolumeTextures& v) {
     }
 }
 
-/// The brick's voxels as `U`, converted by `convert`, in `out` (reused).
-template <class T, class U, class F>
-const U* gather(const VolumeGrid& grid, const Brick& b, std::vector<U>& out, F&& convert) {
-    out.resize(b.texels());
-    std::size_t n = 0;
-    forEachVoxel<T>(grid, b, [&](T x) { out[n++] = convert(x); });
-    return out.data();
-}
-
-void uploadBrick(VolumeTextures& v, const Brick& b, BrickState& s, bool withTags) {
+/// Uploads brick i's textures: from the staged buffer when the grid was staged with this
+/// brick (the same bytes, BrickTexels.h), else from the grid's memory or converted texels.
+void uploadBrick(VolumeTextures& v, std::size_t i, const Brick& b, BrickState& s, bool withTags) {
     const VolumeGrid& grid = *v.data;
-    const bool whole = b.voxelCount == grid.dimensions();
-    const void* pixels = nullptr;
-    switch (grid.type()) {
-    case VoxelType::UByte:
-        pixels = whole
-                     ? grid.data<std::uint8_t>().data()
-                     : gather<std::uint8_t>(grid, b, v.scratch8, [](std::uint8_t x) { return x; });
-        break;
-    case VoxelType::UShort:
-        pixels =
-            whole ? grid.data<std::uint16_t>().data()
-                  : gather<std::uint16_t>(grid, b, v.scratch16, [](std::uint16_t x) { return x; });
-        break;
-    case VoxelType::Short:
-        pixels = gather<std::int16_t>(grid, b, v.scratch16,
-                                      [](std::int16_t x) { return std::uint16_t(int(x) + 32768); });
-        break;
-    case VoxelType::Float: {
-        const double lo = v.finiteMin, hi = v.finiteMax;
-        pixels = gather<float>(grid, b, v.scratchFloat,
-                               [lo, hi](float x) { return float(replaced(x, lo, hi)); });
-        break;
-    }
-    }
+    const bool staged = v.staged && v.staged->covers(i, b, withTags);
+    std::optional<StagedGrid::Binding> binding;
+    if (staged) binding.emplace(*v.staged); // the pointers below are offsets into the buffer
+    auto converted = [&](std::size_t texelBytes, auto write) -> const void* {
+        v.scratch.resize((b.texels() * texelBytes + 3) / 4);
+        write(static_cast<void*>(v.scratch.data()));
+        return v.scratch.data();
+    };
+    // From the buffer the source is an offset, and the first brick's is 0: a null pointer.
+    const void* pixels = staged ? v.staged->dataSource(i) : directBrickTexels(grid, b);
+    if (!staged && !pixels)
+        pixels = converted(uploadTexelBytes(grid.type()), [&](void* out) {
+            writeBrickTexels(grid, b, v.finiteMin, v.finiteMax, out);
+        });
     if (!s.data) s.data = Texture(GL_TEXTURE_3D);
     s.data.image3D(v.format.internalFormat, b.voxelCount.x, b.voxelCount.y, b.voxelCount.z, GL_RED,
                    v.format.type, pixels);
@@ -379,15 +342,9 @@ void uploadBrick(VolumeTextures& v, const Brick& b, BrickState& s, bool withTags
     if (withTags) {
         const VolumeGrid& tags = *v.tags;
         const bool wide = tags.type() == VoxelType::UShort;
-        const void* labels = nullptr;
-        if (wide)
-            labels = whole ? tags.data<std::uint16_t>().data()
-                           : gather<std::uint16_t>(tags, b, v.scratch16,
-                                                   [](std::uint16_t x) { return x; });
-        else
-            labels =
-                whole ? tags.data<std::uint8_t>().data()
-                      : gather<std::uint8_t>(tags, b, v.scratch8, [](std::uint8_t x) { return x; });
+        const void* labels = staged ? v.staged->tagSource(i) : directBrickLabels(tags, b);
+        if (!staged && !labels)
+            labels = converted(wide ? 2 : 1, [&](void* out) { writeBrickLabels(tags, b, out); });
         if (!s.tags) {
             s.tags = Texture(GL_TEXTURE_3D);
             s.tags.setFilter(GL_NEAREST, GL_NEAREST); // integer textures are never filtered
@@ -402,6 +359,7 @@ void uploadBrick(VolumeTextures& v, const Brick& b, BrickState& s, bool withTags
     v.residentBytes += bytes;
     ++v.totals.brickUploads;
     v.totals.uploadedBytes += bytes;
+    if (staged) ++v.totals.stagedUploads;
 }
 
 std::size_t residentBytesOf(const VolumeTextures& v, const Brick& b, const BrickState& s) {
@@ -440,7 +398,7 @@ void makeResident(VolumeTextures& v, std::size_t i, std::uint64_t budget, bool w
             if (victim == v.bricks.size()) break;
             release(v, victim);
         }
-        uploadBrick(v, b, s, withTags);
+        uploadBrick(v, i, b, s, withTags);
     }
     s.lastUse = ++v.useCounter;
 }
@@ -460,17 +418,24 @@ void prepareGrid(VolumeTextures& v, const RayCastVolume& volume) {
     v.naturalRange = {natLo, natHi};
 }
 
+/// How a grid is split into bricks (prepareLayout, and the staging of the next grid).
+BrickLayout::Limits layoutLimits(const VolumeGrid& data, const VolumeGrid* tags,
+                                 const SliceShared& shared, std::uint64_t budget, int guard) {
+    BrickLayout::Limits limits;
+    limits.budgetBytes = budget;
+    limits.maxTextureSize = shared.max3DTextureSize;
+    limits.bytesPerVoxel = dataFormatOf(data.type()).texelBytes +
+                           (tags ? (tags->type() == VoxelType::UShort ? 2 : 1) : 0);
+    limits.guard = guard;
+    return limits;
+}
+
 void prepareLayout(VolumeTextures& v, const SliceShared& shared, std::uint64_t budget, int guard) {
     if (v.hasLayout && v.layoutBudget == budget && v.layoutGuard == guard) return;
     for (std::size_t i = 0; i < v.bricks.size(); ++i)
         release(v, i);
-    BrickLayout::Limits limits;
-    limits.budgetBytes = budget;
-    limits.maxTextureSize = shared.max3DTextureSize;
-    limits.bytesPerVoxel =
-        v.format.texelBytes + (v.tags ? (v.tags->type() == VoxelType::UShort ? 2 : 1) : 0);
-    limits.guard = guard;
-    v.layout = BrickLayout(v.data->dimensions(), v.data->spacing(), limits);
+    v.layout = BrickLayout(v.data->dimensions(), v.data->spacing(),
+                           layoutLimits(*v.data, v.tags.get(), shared, budget, guard));
     v.bricks.clear();
     v.bricks.resize(v.layout.bricks().size());
     measureBricks(v);
@@ -609,6 +574,10 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         (std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.tags.get())) << 1);
     VolumeTextures& v = action.cache<VolumeTextures>(owner, key);
     prepareGrid(v, volume);
+    TextureStaging& staging = action.cache<TextureStaging>(owner);
+    if (staging.next && staging.next->data() == volume.data.get() &&
+        (!staging.next->tags() || staging.next->tags() == volume.tags.get()))
+        v.staged = std::move(staging.next); // staged while the previous step was shown
 
     const bool lighting = settings.lighting && mode == kDvr;
     // Lighting, pre-integration and tag-cell splitting sample up to a voxel (or half a slab)
@@ -617,6 +586,10 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     prepareLayout(v, shared, settings.textureBudget, sampleAround ? 1 : 0);
     prepareTable(v, volume, transferKey);
     const bool tagged = v.tags && v.table.rows() > 1;
+    staging.hasFrame = true; // a grid staged next is laid out as this one
+    staging.textureBudget = settings.textureBudget;
+    staging.guard = sampleAround ? 1 : 0;
+    staging.tagged = tagged;
     const bool preIntegrated = settings.preIntegrated && mode == kDvr && !tagged;
     if (preIntegrated) preparePreIntegration(v);
     const bool hasPlaneOpacity = mode == kDvr && planeOpacityMatters(volume.planeOpacity);
@@ -880,6 +853,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         glActiveTexture(GL_TEXTURE0);
     }
 
+    v.staged.reset(); // its bricks are uploaded; skipped (empty) ones upload directly later
     for (const BrickState& s : v.bricks)
         if (s.resident) ++frame.bricksResident;
     frame.textureBytes = v.residentBytes;
@@ -889,10 +863,36 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     frame.uploadedBytes = v.totals.uploadedBytes;
     frame.transferTableBuilds = v.totals.transferTableBuilds;
     frame.preIntegrationBuilds = v.totals.preIntegrationBuilds;
+    frame.stagedUploads = v.totals.stagedUploads;
     frame.submitMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - prepared)
             .count();
     stats = frame;
+}
+
+void VolumeSlicer::stage(RenderAction& action, const Node& owner,
+                         const ref_ptr<const VolumeGrid>& data,
+                         const ref_ptr<const VolumeGrid>& tags) {
+    if (action.pass() != RenderPass::Volume || !data) return;
+    // Benchmark hook: the direct upload of every step, for before/after figures.
+    if (const char* off = std::getenv("VOLSG_NO_TEXTURE_STAGING"); off && *off && *off != '0')
+        return;
+    TextureStaging& staging = action.cache<TextureStaging>(owner);
+    if (!staging.hasFrame) return; // no frame drawn yet: how to lay the grid out is unknown
+    const ref_ptr<const VolumeGrid> labels = staging.tagged ? tags : nullptr;
+    if (staging.next && staging.next->data() == data.get() && staging.next->tags() == labels.get())
+        return;                                                   // staged already
+    if (tags && tags->dimensions() != data->dimensions()) return; // drawing it will say why
+    if (labels && !labels->isLabelType()) return;
+    const SliceShared& shared = action.cache<SliceShared>(sharedCacheKey());
+    const BrickLayout layout(
+        data->dimensions(), data->spacing(),
+        layoutLimits(*data, tags.get(), shared, staging.textureBudget, staging.guard));
+    double lo = 0.0, hi = 0.0; // only Float data needs its finite range for the texels
+    if (data->type() == VoxelType::Float) std::tie(lo, hi) = data->minMax();
+    staging.next.reset(); // one staged grid at a time: its memory before the new one's
+    staging.next = std::make_unique<StagedGrid>(data, labels, layout, lo, hi);
+    ++staging.stagedGrids;
 }
 
 } // namespace volsg

@@ -82,6 +82,13 @@ public:
     static void draw(RenderAction& action, const Node& owner, const RayCastVolume& volume,
                      std::uint64_t transferKey, const SlicingSettings& settings,
                      SlicingStats& stats);
+
+    /// Stages the textures of the grid `owner` will show next (a VolumeSeries' next step that
+    /// is in memory already) in a pixel unpack buffer, laid out as the last frame's bricks, so
+    /// that the frame showing it uploads from the ready buffer (SlicingStats::stagedUploads).
+    /// Call in the Volume pass after draw(); nothing to do when that grid is staged already.
+    static void stage(RenderAction& action, const Node& owner,
+                      const ref_ptr<const VolumeGrid>& data, const ref_ptr<const VolumeGrid>& tags);
 };
 
 } // namespace volsg

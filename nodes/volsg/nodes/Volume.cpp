@@ -11,6 +11,7 @@
 #include <volsg/nodes/Material.h>
 #include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/VolumeData.h>
+#include <volsg/nodes/VolumeSeries.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/slicing/VolumeSlicer.h>
 #include <volsg/volume/VolumeGrid.h>
@@ -100,6 +101,11 @@ void Volume::render(RenderAction& action) {
             .count();
     VolumeSlicer::draw(action, *this, volume, transferKey, settings, slicingStats_);
     slicingStats_.cpuMilliseconds += gathering;
+    // A series' next step, once prefetched, is staged for upload while this one is shown.
+    if (data->isA<VolumeSeries>()) {
+        const SeriesStepVolume next = static_cast<const VolumeSeries*>(data)->upcomingVolume();
+        VolumeSlicer::stage(action, *this, next.data, next.tags);
+    }
 }
 
 void Volume::getBoundingBox(BoundingBoxAction& action) {

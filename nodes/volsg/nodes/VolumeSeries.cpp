@@ -217,6 +217,14 @@ void VolumeSeries::extendBoundingBox(BoundingBoxAction& action) const {
     action.extendByLocal(box);
 }
 
+SeriesStepVolume VolumeSeries::upcomingVolume() const {
+    showCurrent();
+    const SeriesCache& c = cache();
+    const int next = c.nextStep();
+    if (next < 0 || next == shownStep()) return {};
+    return c.peekVolume(next);
+}
+
 ref_ptr<VoxelObject> VolumeSeries::voxelObject(const ExtractionSpec& spec) const {
     showCurrent();
     return cache().voxelObject(shownStep(), spec);

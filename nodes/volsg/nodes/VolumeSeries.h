@@ -43,6 +43,10 @@ public:
     /// The shown step's box without loading its grid when its lists (or an earlier step's
     /// extent) say it: browsing cached steps never waits for a grid.
     void extendBoundingBox(BoundingBoxAction& action) const override;
+    /// The grids of the step play shows next (direction of play, forward when paused) if they
+    /// are in memory already (prefetched), else empty; never loads. The Volume node stages
+    /// their texture upload.
+    SeriesStepVolume upcomingVolume() const;
     /// The shown step's extracted voxels for `spec`, through the step cache.
     ref_ptr<VoxelObject> voxelObject(const ExtractionSpec& spec) const;
     /// The principal axis the shear-warp renderer drew last (prefetched lists get that list).
