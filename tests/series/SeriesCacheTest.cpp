@@ -126,6 +126,14 @@ TEST_CASE("a read-back object adopts the spilled RenderLists as they were: ident
     back->renderList(1);                   // a list the file did not hold is sorted as before
     CHECK(back->renderListBuilds() == 1u);
     CHECK(back->renderList(1).sameContent(object->renderList(1)));
+
+    // Arrays only (SeriesCacheSettings::spillRenderLists false): the read-back sorts again.
+    writeSpillFile(path, *object, false);
+    const ref_ptr<VoxelObject> arraysOnly = readSpillFile(path);
+    std::filesystem::remove(path);
+    CHECK_FALSE(arraysOnly->hasRenderList(2));
+    CHECK(arraysOnly->renderList(2).packed == object->renderList(2).packed);
+    CHECK(arraysOnly->renderListBuilds() == 1u);
 }
 
 TEST_CASE("spill files of another version or with damaged bytes are refused, naming the file") {

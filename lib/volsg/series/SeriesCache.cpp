@@ -122,6 +122,11 @@ void SeriesCache::setMemoryBudget(std::size_t bytes) {
     changed_.notify_all();
 }
 
+void SeriesCache::setSpillRenderLists(bool spill) {
+    std::lock_guard lock(mutex_);
+    settings_.spillRenderLists = spill;
+}
+
 void SeriesCache::setViewAxis(int axis) {
     std::lock_guard lock(mutex_);
     if (axis == viewAxis_ || axis < 0 || axis > 2) return;
@@ -400,8 +405,9 @@ bool SeriesCache::spillOne(std::unique_lock<std::mutex>& lock) {
     ListEntry& entry = victim->second;
     // A disk copy without a RenderList built since it was read back is written again, so
     // that reading it back once more costs no sort either.
+    const bool spillLists = settings_.spillRenderLists;
     const bool diskCopyComplete =
-        entry.diskBytes > 0 && (listMaskOf(*entry.object) & ~entry.diskLists) == 0;
+        entry.diskBytes > 0 && (!spillLists || (listMaskOf(*entry.object) & ~entry.diskLists) == 0);
     if (std::get<0>(best) == 0 || diskCopyComplete || diskFailed_) {
         // Unwanted (a stale key), or already on disk, or no disk: memory goes, nothing is
         // lost (a missing list is extracted again from the step's data when asked for).
@@ -415,9 +421,9 @@ bool SeriesCache::spillOne(std::unique_lock<std::mutex>& lock) {
     const int step = victim->first.first;
     lock.unlock();
     std::size_t written = 0;
-    const unsigned lists = listMaskOf(*object); // a list built meanwhile is written too
+    const unsigned lists = spillLists ? listMaskOf(*object) : 0; // later lists: next spill
     try {
-        written = writeSpillFile(path, *object);
+        written = writeSpillFile(path, *object, spillLists);
     } catch (const Error&) {
         written = 0;
     }

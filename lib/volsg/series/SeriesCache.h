@@ -38,6 +38,10 @@ struct SeriesCacheSettings {
     int prefetchSteps = 2;  ///< steps made ready ahead in the direction of play
     bool loop = true;       ///< playing wraps around: prefetch past the last step goes to 0
     std::string diskParent; ///< where the cache's folder is made; empty: the system temp folder
+    /// Spill files hold the RenderLists too (9 bytes a voxel per list), so a read-back step is
+    /// drawn without a sort; false: the extracted arrays only (11 bytes a voxel), sorted again
+    /// on read-back (less disk; the benchmark's "before").
+    bool spillRenderLists = true;
 };
 
 struct SeriesCacheStats {
@@ -75,6 +79,8 @@ public:
     void show(int step, int direction);
     int shownStep() const;
     void setMemoryBudget(std::size_t bytes);
+    /// SeriesCacheSettings::spillRenderLists for the spills from now on.
+    void setSpillRenderLists(bool spill);
     /// The principal axis the renderer drew last: the worker builds that RenderList of the
     /// lists it prefetches, so showing them costs no sort.
     void setViewAxis(int axis);

@@ -206,7 +206,7 @@ std::unique_ptr<RenderList> readList(SpillReader& in, int axis, std::uint64_t vo
 
 } // namespace
 
-std::size_t writeSpillFile(const std::string& path, VoxelObject& object) {
+std::size_t writeSpillFile(const std::string& path, VoxelObject& object, bool withRenderLists) {
     const VoxelObject::Arrays a = object.arrays();
     SpillHeader header{};
     std::memcpy(header.magic, kMagic, sizeof kMagic);
@@ -214,7 +214,7 @@ std::size_t writeSpillFile(const std::string& path, VoxelObject& object) {
     for (int axis = 0; axis < 3; ++axis) {
         header.dimensions[axis] = a.dimensions[axis];
         header.spacing[axis] = a.spacing[axis];
-        if (object.hasRenderList(axis)) header.listMask |= 1u << axis;
+        if (withRenderLists && object.hasRenderList(axis)) header.listMask |= 1u << axis;
     }
     header.maxMagnitude = a.maxMagnitude;
     header.voxelCount = a.i.size();

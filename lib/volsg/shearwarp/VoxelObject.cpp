@@ -1,6 +1,7 @@
 #include <volsg/shearwarp/VoxelObject.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -12,6 +13,8 @@
 namespace volsg {
 
 namespace {
+
+std::atomic<std::uint64_t> processBuilds{0}; // VoxelObject::processRenderListBuilds
 
 /// Normalised value v of every voxel, and whether alpha(v) > 0; integer types go through a
 /// table over their raw values so the scan does no piecewise-linear search per voxel.
@@ -189,6 +192,7 @@ RenderList& VoxelObject::renderList(int axis) {
         build(*built, axis);
         list = std::move(built);
         ++builds_;
+        processBuilds.fetch_add(1, std::memory_order_relaxed);
     }
     return *list;
 }
@@ -199,6 +203,10 @@ void VoxelObject::adoptRenderList(std::unique_ptr<RenderList> list) {
     std::lock_guard lock(buildMutex_);
     auto& slot = lists_[std::size_t(list->axis)];
     if (!slot) slot = std::move(list);
+}
+
+std::uint64_t VoxelObject::processRenderListBuilds() {
+    return processBuilds.load(std::memory_order_relaxed);
 }
 
 unsigned VoxelObject::renderListBuilds() const {

@@ -71,6 +71,8 @@ public:
     void adoptRenderList(std::unique_ptr<RenderList> list);
     /// RenderLists this object sorted itself (adopted ones do not count).
     unsigned renderListBuilds() const;
+    /// RenderLists sorted by all objects of the process so far (benchmarks).
+    static std::uint64_t processRenderListBuilds();
     /// Extracted voxels plus every RenderList built so far.
     std::size_t memoryBytes() const;
 
