@@ -1,6 +1,7 @@
 // volsg-view: shows a scene in a window with examiner navigation, manipulators and the editor
 // panels; `--script FILE` plays recorded input (see view/ViewerScript.h).
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 
@@ -11,15 +12,19 @@
 namespace {
 
 const char* usage =
-    "usage: volsg-view SCENE [--script FILE] [--size WxH] [--background R,G,B] [--antialias]\n"
+    "usage: volsg-view SCENE [--script FILE] [--size WxH] [--background R,G,B]\n"
+    "                  [--antialias [msaa|2x2|off]]\n"
     "                  [--no-panels] [--layout single|four] [--navigation examiner|fly|walk]\n"
     "                  [--stereo off|anaglyph|side-by-side] [--eye-separation F]\n"
+    "                  [--seek-time SECONDS]\n"
     "  mouse: left drag rotate, middle or shift+left pan, right or alt+left dolly, wheel dolly,\n"
     "         ctrl+wheel zoom (view angle),\n"
     "         click select, ctrl+left drag on an object: opacity (up/down) and contrast\n"
     "         (left/right), drag a manipulator's handles to move them\n"
-    "  keys:  v view all, h home, o perspective/orthographic, a antialiasing, s seek (then\n"
-    "         click), m manipulator on the selected ClipPlane/BoxClip/Transform, ctrl+s save,\n"
+    "  keys:  v view all, h home, o perspective/orthographic, a antialiasing (off, msaa,\n"
+    "         2x2), s seek (then click: the camera flies half way there in --seek-time,\n"
+    "         default 0.5 s),\n"
+    "         m manipulator on the selected ClipPlane/BoxClip/Transform, ctrl+s save,\n"
     "         p screenshot, z/x zoom in/out, ctrl+z undo, ctrl+y redo, F1 panels, escape\n"
     "         deselect, q quit, l single/four views, e f w examiner/fly/walk, t stereo\n"
     "         (off, anaglyph, side-by-side)\n"
@@ -42,9 +47,20 @@ int run(int argc, char** argv) {
             options.height = s.y;
         } else if (a == "--background")
             options.background = volsg::cli::parseColor(args.value(a));
-        else if (a == "--antialias")
-            options.antialias = true;
-        else if (a == "--no-panels")
+        else if (a == "--antialias") // optionally followed by the mode: msaa (default), 2x2
+            options.antialias = !args.empty() && (args.peek() == "msaa" || args.peek() == "2x2" ||
+                                                  args.peek() == "off")
+                                    ? volsg::parseAntialias(args.take())
+                                    : volsg::Antialias::Multisample;
+        else if (a == "--seek-time") {
+            const std::string text = args.value(a);
+            char* end = nullptr;
+            options.seekTime = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !(options.seekTime >= 0.0) ||
+                !(options.seekTime <= 10.0))
+                throw volsg::Error("option --seek-time expects seconds in [0, 10], not '" + text +
+                                   "'");
+        } else if (a == "--no-panels")
             options.panels = false;
         else if (a == "--layout")
             options.layout = volsg::parseViewLayout(args.value(a));

@@ -124,3 +124,56 @@ TEST_CASE("scripted viewer session rotates, clips, edits the transfer function a
     CHECK(changedBelowVolume == 0); // the bottom rows hold the slab only
     fs::remove_all(dir);
 }
+
+TEST_CASE("a scripted seek flies the camera to the volume's visible content") {
+    if (!haveXvfbRun()) {
+        MESSAGE("xvfb-run is not installed: the viewer end-to-end test is skipped");
+        return;
+    }
+    const fs::path dir =
+        fs::temp_directory_path() / ("volsg-view-seek-" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string scene = std::string(VOLSG_SOURCE_DIR) + "/tests/viewer/viewer-scene.iv";
+    auto file = [&](const char* name) { return (dir / name).string(); };
+    {
+        std::ofstream script(file("script.txt"));
+        script << "wait 1\n"
+               << "screenshot " << file("before.png") << " scene\n"
+               << "key s\n"
+               << "click left world:0,0,0\n" // the volume's centre, straight ahead
+               << "wait 3\n"
+               << "screenshot " << file("during.png") << " scene\n"
+               << "wait seek\n"
+               << "screenshot " << file("after.png") << " scene\n"
+               << "save " << file("saved.iv") << "\n"
+               << "quit\n";
+    }
+    std::string log;
+    const int status =
+        runViewerScript(scene, "--size 400x300 --no-panels", file("script.txt"), log);
+    INFO("viewer output: " << log);
+    REQUIRE(status == 0);
+
+    ref_ptr<Node> saved = readScene(file("saved.iv"));
+    auto* camera = static_cast<Camera*>(findByName(*saved, "camera"));
+    REQUIRE(camera);
+    // The click's ray runs down the z axis. Its pick is the soft sphere's visible content (the
+    // data 1 - r / 0.9 under alpha 0.6 v reaches 0.02 at r = 0.87), not the box face at z = 1:
+    // the new focal point is there and the camera half way from z = 4.5 to it.
+    const glm::dvec3 p(camera->position());
+    CHECK(std::abs(p.x) < 1e-3);
+    CHECK(std::abs(p.y) < 1e-3);
+    CHECK(camera->orientation().angle == 0.0f); // the seek keeps the orientation
+    const double picked = p.z - double(camera->focalDistance());
+    CHECK(picked == doctest::Approx(0.87).epsilon(0.07)); // within half a voxel (1/16)
+    CHECK(picked < 0.95);
+    CHECK(p.z == doctest::Approx(0.5 * (4.5 + picked)).epsilon(1e-4));
+    // Three frames after the click the camera is on its way: that picture differs from both
+    // the one before and the one after.
+    const Image before = readPng(file("before.png")), during = readPng(file("during.png"));
+    const Image after = readPng(file("after.png"));
+    CHECK(changedPixels(before, during, 2.0f / 255.0f) > 500);
+    CHECK(changedPixels(during, after, 2.0f / 255.0f) > 500);
+    fs::remove_all(dir);
+}

@@ -6,6 +6,7 @@
 
 #include <volsg/core/Error.h>
 
+#include "view/ViewModes.h"
 #include "view/ViewerScript.h"
 
 using namespace volsg;
@@ -102,4 +103,31 @@ TEST_CASE("unknown view modes and views are errors naming the line") {
             CHECK(e.line() == 2);
         }
     }
+}
+
+TEST_CASE("wait takes a frame count or waits for the seek animation") {
+    const auto steps = parseViewerScript("wait 3\nwait seek\n", "s.txt");
+    REQUIRE(steps.size() == 2);
+    CHECK(steps[0].kind == ScriptStep::Kind::Wait);
+    CHECK(steps[0].frames == 3);
+    CHECK(steps[0].text.empty());
+    CHECK(steps[1].kind == ScriptStep::Kind::Wait);
+    CHECK(steps[1].text == "seek");
+    CHECK(steps[1].frames == 0);
+    try {
+        parseViewerScript("wait\nwait forever\n", "w.txt");
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.line() == 1); // a bare wait has no count
+    }
+    CHECK_THROWS_AS(parseViewerScript("wait forever\n", "w.txt"), Error);
+    CHECK_THROWS_AS(parseViewerScript("wait seek 2\n", "w.txt"), Error);
+}
+
+TEST_CASE("antialiasing modes have names both ways and unknown names are errors") {
+    for (Antialias mode : {Antialias::Off, Antialias::Multisample, Antialias::Supersample})
+        CHECK(parseAntialias(antialiasName(mode)) == mode);
+    CHECK(parseAntialias("msaa") == Antialias::Multisample);
+    CHECK(parseAntialias("2x2") == Antialias::Supersample);
+    CHECK_THROWS_AS(parseAntialias("8x"), Error);
 }

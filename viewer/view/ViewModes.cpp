@@ -33,4 +33,15 @@ const char* navigationModeName(NavigationMode mode) {
     return "examiner";
 }
 
+Antialias parseAntialias(const std::string& text) {
+    if (text == "off") return Antialias::Off;
+    if (text == "msaa") return Antialias::Multisample;
+    if (text == "2x2") return Antialias::Supersample;
+    throw Error("unknown antialiasing '" + text + "' (off, msaa, 2x2)");
+}
+
+const char* antialiasName(Antialias mode) {
+    return mode == Antialias::Multisample ? "msaa" : mode == Antialias::Supersample ? "2x2" : "off";
+}
+
 } // namespace volsg

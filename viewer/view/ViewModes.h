@@ -1,7 +1,8 @@
 #pragma once
 // The viewer's view settings by name, for the command line, the script and the panels:
 // the window layout (the 3D view alone, or with the three section views) and the navigation
-// mode (Inventor's examiner, fly and walk viewers). Stereo modes: StereoRenderer.h.
+// mode (Inventor's examiner, fly and walk viewers) and the antialiasing of the 3D view.
+// Stereo modes: StereoRenderer.h.
 
 #include <string>
 
@@ -20,5 +21,13 @@ const char* viewLayoutName(ViewLayout layout);
 /// "examiner" / "fly" / "walk"; throws Error for anything else.
 NavigationMode parseNavigationMode(const std::string& text);
 const char* navigationModeName(NavigationMode mode);
+
+/// Antialiasing of the 3D view: off, 4x multisampling of the opaque pass
+/// (RenderOptions::samples; volumes composite against its resolved depth) or 2x2 supersampling
+/// of the whole view (four times the pixels, volumes included).
+enum class Antialias { Off, Multisample, Supersample };
+/// "off" / "msaa" / "2x2"; throws Error for anything else.
+Antialias parseAntialias(const std::string& text);
+const char* antialiasName(Antialias mode);
 
 } // namespace volsg

@@ -202,7 +202,8 @@ void Viewer::onKey(int key, int mods) {
 
 bool Viewer::isInteracting() const {
     if (drag_ != Drag::None && drag_ != Drag::Pending) return true;
-    if (fly_ && fly_->speed() != 0.0) return true; // the view moves every frame
+    if (fly_ && fly_->speed() != 0.0) return true;            // the view moves every frame
+    if (navigation_ && navigation_->isSeeking()) return true; // the seek flies every frame
     // Dragging in an editor canvas or on a slider counts too: the render should keep up.
     return ImGui::GetCurrentContext() && ImGui::IsAnyItemActive() && ImGui::IsMouseDown(0);
 }
@@ -277,7 +278,11 @@ void Viewer::handleSceneEvents() {
                     navigation_->toggleProjection();
                     break;
                 case GLFW_KEY_A:
-                    options_.antialias = !options_.antialias;
+                    // off, multisampling, 2x2 supersampling, off, ...
+                    options_.antialias =
+                        options_.antialias == Antialias::Off           ? Antialias::Multisample
+                        : options_.antialias == Antialias::Multisample ? Antialias::Supersample
+                                                                       : Antialias::Off;
                     break;
                 case GLFW_KEY_L:
                     setLayout(options_.layout == ViewLayout::Single ? ViewLayout::Four
@@ -367,7 +372,8 @@ void Viewer::beginSceneDrag(int button, int mods) {
         }
         if (seekMode_) {
             seekMode_ = false;
-            if (const auto hit = pickScene(*root_, ray)) navigation_->seek(hit->point);
+            if (const auto hit = pickScene(*root_, ray))
+                navigation_->startSeek(hit->point, 0.5, options_.seekTime);
             dragButton_ = -1;
             return;
         }
@@ -470,6 +476,7 @@ void Viewer::setLayout(ViewLayout layout) {
 
 void Viewer::setNavigationMode(NavigationMode mode) {
     options_.navigation = mode;
+    navigation_->stopSeek(); // fly and walk move the camera themselves
     fly_.reset();
     walk_.reset();
     if (drag_ == Drag::Walk || drag_ == Drag::Tilt) endSceneDrag();
@@ -495,6 +502,7 @@ void Viewer::stepNavigation() {
         scripted ? 1.0 / 30.0
                  : std::min(std::chrono::duration<double>(now - lastNavigationStep_).count(), 0.1);
     lastNavigationStep_ = now;
+    navigation_->stepSeek(seconds);
     // The projection toggle makes a new camera: fly and walk follow it.
     if ((fly_ && &fly_->camera() != &navigation_->camera()) ||
         (walk_ && &walk_->camera() != &navigation_->camera()))
@@ -714,7 +722,24 @@ void Viewer::screenshot(const std::string& path, bool sceneOnly) {
         o.height = size.y;
         o.background = options_.background;
         o.camera = navigation_->cameraPtr();
+        // With the view's antialiasing: multisampled, or rendered at twice the size and each
+        // 2x2 block averaged.
+        const bool supersample = options_.antialias == Antialias::Supersample;
+        if (options_.antialias == Antialias::Multisample) o.samples = 4;
+        if (supersample) {
+            o.width *= 2;
+            o.height *= 2;
+        }
         image = renderStereo(*renderer_, *root_, o, options_.stereo);
+        if (supersample) {
+            Image small(size.x, size.y);
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x)
+                    small.at(x, y) =
+                        0.25f * (image.at(2 * x, 2 * y) + image.at(2 * x + 1, 2 * y) +
+                                 image.at(2 * x, 2 * y + 1) + image.at(2 * x + 1, 2 * y + 1));
+            image = std::move(small);
+        }
     } else {
         // The back buffer as drawn this frame (the front buffer reads black under GLX).
         std::vector<unsigned char> rgba(std::size_t(size.x) * std::size_t(size.y) * 4);
@@ -803,6 +828,10 @@ void Viewer::runScriptStep() {
         if (s.hasPoint) point = resolvePoint(s.point);
         switch (s.kind) {
         case K::Wait:
+            if (s.text == "seek") {
+                if (navigation_->isSeeking()) --scriptNext_; // again next frame
+                break;
+            }
             scriptWait_ = std::max(0, s.frames - 1);
             break;
         case K::Move:
@@ -985,7 +1014,10 @@ void Viewer::renderViews() {
     // TransferFunction nodes, so their textures and tables are made once for every view.
     renderer_->beginViewGroup();
     try {
-        renderIntoRect(*root_, o, viewRect(kView3D), options_.antialias, true);
+        RenderOptions view3D = o;
+        if (options_.antialias == Antialias::Multisample) view3D.samples = 4;
+        renderIntoRect(*root_, view3D, viewRect(kView3D),
+                       options_.antialias == Antialias::Supersample, true);
         if (four)
             for (int s = 0; s < 3; ++s) {
                 const ViewRect r = viewRect(1 + s);
@@ -1110,7 +1142,9 @@ void Viewer::drawPanels() {
                 lastFrameMs_ > 0 ? 1000.0 / lastFrameMs_ : 0.0, lastFrameMs_, lastRenderMs_);
     ImGui::Text("%s  planes x%.3g  %s%s", isInteracting() ? "interactive" : "still",
                 quality_.scale(), navigation_->isOrthographic() ? "ortho" : "perspective",
-                options_.antialias ? "  AA 2x2" : "");
+                options_.antialias == Antialias::Multisample   ? "  AA msaa 4x"
+                : options_.antialias == Antialias::Supersample ? "  AA 2x2"
+                                                               : "");
     if (ImGui::Button("view all")) navigation_->viewAll(sceneBox());
     ImGui::SameLine();
     if (ImGui::Button("home")) navigation_->goHome();
@@ -1118,7 +1152,12 @@ void Viewer::drawPanels() {
     if (ImGui::Button(navigation_->isOrthographic() ? "perspective" : "ortho"))
         navigation_->toggleProjection();
     ImGui::SameLine();
-    ImGui::Checkbox("AA", &options_.antialias);
+    int aa = int(options_.antialias);
+    ImGui::SetNextItemWidth(90.0f);
+    if (ImGui::Combo("AA", &aa,
+                     "off\0msaa 4x\0"
+                     "2x2\0"))
+        options_.antialias = Antialias(aa);
     if (ImGui::Button(seekMode_ ? "seek: click a point" : "seek")) seekMode_ = !seekMode_;
     ImGui::SameLine();
     ImGui::BeginDisabled(!history_.canUndo());

@@ -49,8 +49,9 @@ struct ViewerOptions {
     std::string scriptPath; ///< empty: interactive only
     int width = 1280, height = 800;
     glm::vec3 background{0.1f, 0.1f, 0.12f};
-    bool antialias = false; ///< 2x2 supersampling of the scene
-    bool panels = true;     ///< the editor panels (F1 toggles them)
+    Antialias antialias = Antialias::Off; ///< of the 3D view
+    double seekTime = 0.5; ///< seconds a seek flies (Inventor's SoSeekTime); 0: at once
+    bool panels = true;    ///< the editor panels (F1 toggles them)
     ViewLayout layout = ViewLayout::Single;
     NavigationMode navigation = NavigationMode::Examiner;
     StereoOptions stereo{StereoMode::Off}; ///< of the 3D view
@@ -113,7 +114,8 @@ private:
     int viewAt(const glm::dvec2& pixel) const; ///< -1 outside every view
     void renderViews();
     /// Renders `root` seen by options.camera into `rect` of the window (supersampled when
-    /// `antialias`); the 3D view goes through the stereo renderer when stereo is on.
+    /// `antialias`, else as options.samples says); the 3D view goes through the stereo renderer
+    /// when stereo is on.
     void renderIntoRect(Node& root, RenderOptions options, const ViewRect& rect, bool antialias,
                         bool stereo);
     void drawImageIntoRect(const Image& image, const ViewRect& rect);

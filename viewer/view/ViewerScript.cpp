@@ -167,7 +167,12 @@ std::vector<ScriptStep> parseViewerScript(const std::string& text, const std::st
         using K = ScriptStep::Kind;
         if (command == "wait") {
             s.kind = K::Wait;
-            s.frames = r.count("a frame count");
+            if (r.more() && !r.nextIsNumber())
+                s.text = r.word("seek"); // until the seek animation is over
+            else
+                s.frames = r.count("a frame count");
+            if (!s.text.empty() && s.text != "seek")
+                r.fail("expected a frame count or 'seek', got '" + s.text + "'");
             r.end();
             steps.push_back(s);
         } else if (command == "move") {

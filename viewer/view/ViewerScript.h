@@ -5,6 +5,7 @@
 //
 //   # comment
 //   wait N                          N frames
+//   wait seek                       until the seek animation is over (at once when none runs)
 //   move X Y                        the mouse to a point
 //   press BUTTON [X Y] [MODS]       BUTTON: left middle right; MODS: shift ctrl alt
 //   release BUTTON [X Y] [MODS]
