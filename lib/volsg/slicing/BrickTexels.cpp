@@ -1,6 +1,7 @@
 #include <volsg/slicing/BrickTexels.h>
 
 #include <cstdint>
+#include <cstring>
 
 namespace volsg {
 
@@ -15,6 +16,27 @@ void writeConverted(const VolumeGrid& grid, const Brick& b, void* out, F&& conve
 
 bool isWhole(const VolumeGrid& grid, const Brick& b) {
     return b.firstVoxel == glm::ivec3(0) && b.voxelCount == grid.dimensions();
+}
+
+/// Unconverted texels: row by row (the whole grid at once when the brick is the grid).
+template <class T> void copyRows(const VolumeGrid& grid, const Brick& b, void* out) {
+    const T* src = grid.data<T>().data();
+    auto* to = static_cast<std::uint8_t*>(out);
+    if (isWhole(grid, b)) {
+        std::memcpy(to, src, b.texels() * sizeof(T));
+        return;
+    }
+    const glm::ivec3 d = grid.dimensions();
+    const std::size_t rowBytes = std::size_t(b.voxelCount.x) * sizeof(T);
+    for (int k = 0; k < b.voxelCount.z; ++k)
+        for (int j = 0; j < b.voxelCount.y; ++j) {
+            const std::size_t row =
+                std::size_t(b.firstVoxel.x) +
+                std::size_t(d.x) * (std::size_t(b.firstVoxel.y + j) +
+                                    std::size_t(d.y) * std::size_t(b.firstVoxel.z + k));
+            std::memcpy(to, src + row, rowBytes);
+            to += rowBytes;
+        }
 }
 
 } // namespace
@@ -43,11 +65,10 @@ void writeBrickTexels(const VolumeGrid& grid, const Brick& b, double finiteMin, 
                       void* out) {
     switch (grid.type()) {
     case VoxelType::UByte:
-        writeConverted<std::uint8_t, std::uint8_t>(grid, b, out, [](std::uint8_t x) { return x; });
+        copyRows<std::uint8_t>(grid, b, out);
         break;
     case VoxelType::UShort:
-        writeConverted<std::uint16_t, std::uint16_t>(grid, b, out,
-                                                     [](std::uint16_t x) { return x; });
+        copyRows<std::uint16_t>(grid, b, out);
         break;
     case VoxelType::Short:
         writeConverted<std::int16_t, std::uint16_t>(
@@ -69,10 +90,9 @@ const void* directBrickLabels(const VolumeGrid& tags, const Brick& b) {
 
 void writeBrickLabels(const VolumeGrid& tags, const Brick& b, void* out) {
     if (tags.type() == VoxelType::UShort)
-        writeConverted<std::uint16_t, std::uint16_t>(tags, b, out,
-                                                     [](std::uint16_t x) { return x; });
+        copyRows<std::uint16_t>(tags, b, out);
     else
-        writeConverted<std::uint8_t, std::uint8_t>(tags, b, out, [](std::uint8_t x) { return x; });
+        copyRows<std::uint8_t>(tags, b, out);
 }
 
 } // namespace volsg
