@@ -110,12 +110,14 @@ TEST_CASE("multisampling gives a tilted cube's edge pixels coverage in quarter s
 TEST_CASE("a volume composites against the multisampled pass's resolved depth") {
     OSMesaContext context;
     context.makeCurrent();
-    Renderer renderer;
+    // Two renderers, so that the multisampled frames' target never holds a single-sampled
+    // frame's depth: what the volumes see there is the resolved depth or nothing.
+    Renderer renderer, multisampled;
     ref_ptr<Node> root = readSceneFromString(cubeInVolume);
+    const Image on = renderScene(multisampled, *root, 4);
+    const Image onOpaque = renderScene(multisampled, *root, 4, true);
     const Image coverage = renderScene(renderer, *root, 0, true); // the cube alone
     const Image off = renderScene(renderer, *root, 0);
-    const Image on = renderScene(renderer, *root, 4);
-    const Image onOpaque = renderScene(renderer, *root, 4, true);
     int compared = 0, cubePixels = 0, volumeOverCube = 0;
     float worst = 0.0f;
     for (int y = 0; y < kSize; ++y)
