@@ -21,13 +21,17 @@ const char* usage =
     "  (SCENE: a scene file or a .vsgv voxel-list file written by volsg-pack)\n"
     "                    [--background R,G,B] [--reference [--tolerance T]]\n"
     "                    [--stereo anaglyph|side-by-side [--eye-separation F]]\n"
+    "                    [--interactive]\n"
     "  --reference   render the volumes with the CPU reference ray caster (SCENE-FORMAT.md\n"
     "                section 4) over GL's opaque geometry; prints the error bound reached\n"
     "  --tolerance   the reference's per-pixel convergence tolerance (default 1e-4)\n"
     "  --stereo      a stereo pair of the scene camera: red-cyan anaglyph (red = left eye) or\n"
     "                the two eyes side by side (left eye left, each half the width), zero\n"
     "                parallax at the camera's focalDistance\n"
-    "  --eye-separation  the eye separation as a fraction of focalDistance (default 1/30)\n";
+    "  --eye-separation  the eye separation as a fraction of focalDistance (default 1/30)\n"
+    "  --interactive the frame the viewer draws while the user drags: volumes use their\n"
+    "                interactive settings (Volume.interactivePlanes,\n"
+    "                ShearWarpVolume.interactiveSliceStep)\n";
 
 double parseTolerance(const std::string& text) {
     char* end = nullptr;
@@ -60,6 +64,8 @@ int run(int argc, char** argv) {
             options.background = volsg::cli::parseColor(args.value(a));
         else if (a == "--reference")
             reference = true;
+        else if (a == "--interactive")
+            options.interactive = true;
         else if (a == "--tolerance")
             rayOptions.tolerance = parseTolerance(args.value(a));
         else if (a == "--stereo")

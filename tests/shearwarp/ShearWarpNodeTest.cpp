@@ -257,3 +257,50 @@ TEST_CASE("a transfer function edit keeps the lists and the optimizer keeps the 
                             << volume->lastFrame()->stats.voxelsTouched << " after");
     CHECK(volume->lastFrame()->stats.voxelsTouched < touchedAll / 2);
 }
+
+TEST_CASE("while interacting the node skips slices, lowered further by the viewer's scale") {
+    ref_ptr<ShearWarpVolume> node = ShearWarpVolume::create();
+    CHECK(node->sliceStepFor(false, 1.0) == 1);
+    CHECK(node->sliceStepFor(false, 0.1) == 1); // still frames are full quality
+    CHECK(node->sliceStepFor(true, 1.0) == 2);  // the default interactiveSliceStep
+    CHECK(node->sliceStepFor(true, 0.5) == 4);
+    CHECK(node->sliceStepFor(true, 0.3) == 7); // 2 / 0.3 = 6.67, rounded
+    CHECK(node->sliceStepFor(true, 1.0 / 32.0) == 16);
+    node->interactiveSliceStep = 1;
+    CHECK(node->sliceStepFor(true, 1.0) == 1);
+    node->interactiveSliceStep = -5; // nonsense counts as 1
+    CHECK(node->sliceStepFor(true, 0.25) == 4);
+
+    OSMesaContext context;
+    Renderer renderer;
+    const ref_ptr<Node> root = readSceneFromString(
+        sceneWith("MARSCHNER_LOBB", "",
+                  "    TransferFunction { red [ 0 0.1, 0.5 0.9, 1 1 ] green [ 0 0.3, 1 0.9 ] "
+                  "blue [ 0 1, 1 0.1 ] alpha [ 0 0, 1 0.2 ] }\n"
+                  "    VolumeObject { }\n"));
+    ShearWarpVolume* volume = findNode<ShearWarpVolume>(*root);
+    REQUIRE(volume != nullptr);
+    volume->optimize = false;
+    RenderOptions options = smallOptions();
+    const Image still = renderer.render(*root, options);
+    const ShearWarpStats stillStats = volume->lastFrame()->stats;
+    options.interactive = true;
+    const Image moving = renderer.render(*root, options);
+    const ShearWarpStats movingStats = volume->lastFrame()->stats;
+    options.interactivePlaneScale = 0.5;
+    renderer.render(*root, options);
+    const ShearWarpStats slowerStats = volume->lastFrame()->stats;
+    options.interactive = false;
+    const Image stillAgain = renderer.render(*root, options);
+
+    CHECK(stillStats.sliceStep == 1);
+    CHECK(movingStats.sliceStep == 2);
+    CHECK(slowerStats.sliceStep == 4);
+    CHECK(movingStats.voxelsTouched < stillStats.voxelsTouched * 6 / 10);
+    CHECK(slowerStats.voxelsTouched < stillStats.voxelsTouched * 3 / 10);
+    const double error = rmse(moving, still);
+    MESSAGE("interactive (every second slice) versus still RMSE " << error);
+    CHECK(error > 0.0);                       // it did render differently
+    CHECK(error < 0.01);                      // and stays close to full quality
+    CHECK(stillAgain.pixels == still.pixels); // full quality as soon as the interaction stops
+}

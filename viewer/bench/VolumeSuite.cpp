@@ -196,20 +196,28 @@ BenchRow measureSlicing(Node& root, Volume& volume, const SuiteScene& scene,
 
 /// Times the rotating views with the ShearWarpVolume node: a warm-up pass over every view
 /// first (it extracts the objects and builds the lists of every principal axis the orbit
-/// uses), then, with `optimized`, waits for the idle-time optimizer before timing.
+/// uses), then, with `optimized`, waits for the idle-time optimizer before timing. With
+/// `interactive`, the frames are the viewer's interactive ones (the node's interactive slice
+/// step).
 BenchRow measureShearWarp(Node& root, ShearWarpVolume& volume, const SuiteScene& scene, int threads,
-                          bool optimized, const VolumeSuiteSettings& st, const OrbitViews& views,
-                          const ReferenceImages& reference) {
+                          bool optimized, bool interactive, const VolumeSuiteSettings& st,
+                          const OrbitViews& views, const ReferenceImages& reference) {
     BenchRow row;
     row.scene = scene.name;
     row.path = "shear-warp";
-    row.setting = format("%g threads", threads) + (optimized ? ", optimized" : ", not optimized") +
-                  ", orthographic";
-    row.series = optimized ? "shear-warp optimized" : "shear-warp";
+    row.setting =
+        format("%g threads", threads) + (optimized ? ", optimized" : ", not optimized") +
+        ", orthographic" +
+        (interactive ? format(", interactive (slice step %g)", volume.sliceStepFor(true, 1.0))
+                     : std::string());
+    row.series = interactive ? "shear-warp interactive"
+                 : optimized ? "shear-warp optimized"
+                             : "shear-warp";
     row.pointLabel = format("%g thr", threads);
     volume.threads = threads;
     volume.optimize = optimized;
     RenderOptions options;
+    options.interactive = interactive;
     options.width = st.width;
     options.height = st.height;
     options.background = st.background;
@@ -379,8 +387,9 @@ std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
         emit(swTruthRow);
         for (bool optimized : {false, true})
             for (int threads : {1, 2})
-                emit(measureShearWarp(*swRoot, *shearWarp, scene, threads, optimized, st, swViews,
-                                      swTruth));
+                emit(measureShearWarp(*swRoot, *shearWarp, scene, threads, optimized, false, st,
+                                      swViews, swTruth));
+        emit(measureShearWarp(*swRoot, *shearWarp, scene, 2, true, true, st, swViews, swTruth));
     }
     return rows;
 }

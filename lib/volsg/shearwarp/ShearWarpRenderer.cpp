@@ -73,6 +73,8 @@ struct FrameObject {
     Part parts[2];                         // unclipped, clipped
     std::vector<std::uint32_t> sliceStart; // entries of slice k: [sliceStart[k], sliceStart[k+1])
     std::vector<glm::vec4> mipTable;       // value (4096) -> premultiplied colour, MIP
+    int sliceStep = 1;                     // draws slices k with k % sliceStep == slicePhase
+    int slicePhase = 0;
 };
 
 /// First index in [begin, end) whose packed b is >= b (voxels sorted by b).
@@ -213,6 +215,8 @@ ShearWarpFrame ShearWarpRenderer::render(std::vector<ShearWarpObject>& objects,
     frame.originB = vb0;
     frame.stats.principalAxis = c;
     frame.stats.intermediateSize = {W, H};
+    const int sliceStep = std::clamp(view.sliceStep, 1, std::max(1, nc));
+    frame.stats.sliceStep = sliceStep;
 
     // --- Objects: lists, clip split, tables ------------------------------------------------
     std::vector<FrameObject> fo(objects.size());
@@ -232,12 +236,16 @@ ShearWarpFrame ShearWarpRenderer::render(std::vector<ShearWarpObject>& objects,
     for (FrameObject& f : fo) {
         ShearWarpObject& o = *f.source;
         prepare(o, *f.list);
+        // Skipped slices: the kept ones sit in the middle of their group of sliceStep (so the
+        // pattern is symmetric in the volume) and each stands for sliceStep slices.
+        f.sliceStep = o.thinLayer ? 1 : sliceStep;
+        f.slicePhase = ((nc - 1) % f.sliceStep) / 2;
         const VoxelLook looks[2] = {o.unclipped, o.clipped};
         for (int part = 0; part < 2; ++part) {
             f.parts[part].draw = looks[part].opacity > 0.0f;
             if (f.parts[part].draw)
-                f.parts[part].tables =
-                    VoxelTables::build(o, looks[part], stepRatio, localToEye, view.lightDirection);
+                f.parts[part].tables = VoxelTables::build(o, looks[part], stepRatio * f.sliceStep,
+                                                          localToEye, view.lightDirection);
         }
         if (o.compositing != ObjectCompositing::DVR) pureDvr = false;
         if (o.compositing == ObjectCompositing::MIP) {
@@ -355,6 +363,7 @@ ShearWarpFrame ShearWarpRenderer::render(std::vector<ShearWarpObject>& objects,
 
             for (std::size_t oi = 0; oi < fo.size(); ++oi) {
                 FrameObject& f = fo[oi];
+                if (k % f.sliceStep != f.slicePhase) continue;
                 const std::uint32_t e0 = f.sliceStart[std::size_t(k)];
                 const std::uint32_t e1 = f.sliceStart[std::size_t(k) + 1];
                 if (e0 == e1) continue;

@@ -46,6 +46,9 @@ struct ShearWarpObject {
     glm::vec3 contourColor{1.0f, 1.0f, 0.0f}; ///< ColoredContour
     float contourSharpness = 4.0f;            ///< exponent of (1 - |n.v|)
     float shininess = 20.0f;                  ///< Phong exponent of the Shaded tables
+    /// The voxels are one-voxel layers (a SURFACE selection): drawn at every slice even when
+    /// the view skips slices, since a skipped slice would punch holes into the layer.
+    bool thinLayer = false;
     /// Clipping in the volume's local coordinates: a voxel centre is clipped when it lies on
     /// the removed side of a plane (keeping a*x + b*y + c*z >= d) or outside the box.
     std::vector<glm::dvec4> clipPlanes;
@@ -68,6 +71,10 @@ struct ShearWarpView {
     std::vector<float> opaqueWindowDepth;
     InterObjectCompositing interObject = InterObjectCompositing::DVR;
     int threads = 0; ///< 0: std::thread::hardware_concurrency()
+    /// Composite every sliceStep-th slice, each standing for sliceStep slices of thickness
+    /// (opacity-corrected): the fast setting while the user interacts, as fewer planes are for
+    /// the slicer. Thin-layer objects keep every slice. 1: every slice (full quality).
+    int sliceStep = 1;
 };
 
 /// What a frame did.
@@ -78,6 +85,7 @@ struct ShearWarpStats {
     std::uint64_t voxelsHidden = 0;  ///< of them skipped: all their pixels had stopped (pure DVR)
     std::uint64_t entriesDrawn = 0;
     bool fastPath = false; ///< pure DVR: one pixel buffer
+    int sliceStep = 1;     ///< the view's slice step, as used (clamped to the volume)
 };
 
 } // namespace volsg

@@ -2,6 +2,8 @@
 // (lib/volsg/shearwarp) and composites the result into the frame with GL.
 #include <volsg/nodes/ShearWarpVolume.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 
@@ -191,6 +193,7 @@ std::vector<ShearWarpObject> ShearWarpVolume::gatherObjects(const State& state,
         o.contourColor = vo.contourColor();
         o.contourSharpness = vo.contourSharpness();
         o.shininess = vo.shininess();
+        o.thinLayer = vo.voxels() == VolumeObject::SURFACE;
         o.clipPlanes = localPlanes;
         std::uint64_t clipKey = worldPlanes.empty() ? 0 : planeKey;
         if (scope.box.node) {
@@ -265,6 +268,14 @@ void ShearWarpVolume::doAction(Action& action) {
     action.state().pop();
 }
 
+int ShearWarpVolume::sliceStepFor(bool interactive, double interactivePlaneScale) const {
+    constexpr int maximumStep = 16;
+    if (!interactive) return 1;
+    const double scale = interactivePlaneScale > 0.0 ? std::min(interactivePlaneScale, 1.0) : 1.0;
+    const double step = std::max(1, interactiveSliceStep()) / scale;
+    return int(std::clamp(std::lround(step), 1L, long(maximumStep)));
+}
+
 void ShearWarpVolume::render(RenderAction& action) {
     if (action.pass() != RenderPass::Volume) return;
     std::vector<VolumeObject*> sources;
@@ -280,6 +291,7 @@ void ShearWarpVolume::render(RenderAction& action) {
     view.interObject =
         interObjectCompositing() == MIP ? InterObjectCompositing::MIP : InterObjectCompositing::DVR;
     view.threads = threads();
+    view.sliceStep = sliceStepFor(action.isInteractive(), action.interactivePlaneScale());
     std::vector<SceneLight> lights;
     action.lightsInScope(lights);
     for (const SceneLight& l : lights)

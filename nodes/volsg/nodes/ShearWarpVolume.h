@@ -26,6 +26,10 @@ public:
     SFEnum interObjectCompositing{this, "interObjectCompositing", interObjectNames, DVR};
     SFBool optimize{this, "optimize", true}; ///< run the idle-time optimizer
     SFInt32 threads{this, "threads", 0};     ///< 0: every core
+    /// While the viewer reports interaction: composite every n-th slice (opacity-corrected), n
+    /// = interactiveSliceStep divided by the viewer's interactive plane scale (at most 16).
+    /// SURFACE objects keep every slice. 1: full quality while interacting too.
+    SFInt32 interactiveSliceStep{this, "interactiveSliceStep", 2};
     /// A compact voxel-list file (.vsgv, lib/volsg/voxelfile/README.md), "path" or "path#k"
     /// for its volume k: the objects' voxels come from it instead of the VolumeData in scope.
     SFString voxelFile{this, "voxelFile", ""};
@@ -59,6 +63,10 @@ public:
 
     /// Blocks until the optimizer has finished with the current lists.
     void waitForOptimizer();
+
+    /// The slice step a frame uses: 1 for still frames; while interactive,
+    /// interactiveSliceStep / interactivePlaneScale rounded, in [1, 16].
+    int sliceStepFor(bool interactive, double interactivePlaneScale) const;
 
     void doAction(Action& action) override;
     void render(RenderAction& action) override;
