@@ -35,6 +35,7 @@ using namespace volsg;
 const char* usage =
     "usage: volsg-bench SCENE.iv [--frames N] [--size WxH] [--backend osmesa|egl]\n"
     "                   [--error [--error-frames K]] [--csv FILE] [--plot FILE.svg]\n"
+    "                   [--interactive]   (the viewer's frames while the user drags)\n"
     "       volsg-bench --suite parse|traversal|all [--nodes N] [--side S] [--frames N]\n"
     "                   [--keep DIR]\n"
     "       volsg-bench --suite series [--size WxH] [--frames STEPS] [--volume-side N]\n"
@@ -186,15 +187,17 @@ int sceneBenchmark(const Settings& st) {
     std::vector<Image> images;
     const bench::Samples samples = orbitFrames(renderer, *root, st.options, views, &images);
     char what[160];
-    std::snprintf(what, sizeof what, "%s %dx%d %s", st.scene.c_str(), st.options.width,
-                  st.options.height, st.backend == Backend::EGL ? "egl" : "osmesa");
+    std::snprintf(what, sizeof what, "%s %dx%d %s%s", st.scene.c_str(), st.options.width,
+                  st.options.height, st.backend == Backend::EGL ? "egl" : "osmesa",
+                  st.options.interactive ? " interactive" : "");
     printRow(what, samples);
 
     bench::BenchRow row;
     row.scene = std::filesystem::path(st.scene).stem().string();
     row.path = "gl";
     row.setting = std::to_string(st.options.width) + "x" + std::to_string(st.options.height) +
-                  (st.backend == Backend::EGL ? " egl" : " osmesa");
+                  (st.backend == Backend::EGL ? " egl" : " osmesa") +
+                  (st.options.interactive ? " interactive" : "");
     row.ms = samples.median();
     row.frames = int(samples.ms.size());
     row.series = "gl";
@@ -308,6 +311,8 @@ int run(int argc, char** argv) {
             st.sizeGiven = true;
         } else if (a == "--error")
             st.error = true;
+        else if (a == "--interactive")
+            st.options.interactive = true;
         else if (a == "--error-frames") {
             st.errorFrames = args.intValue(a, 1, 100000);
             st.errorFramesGiven = true;
