@@ -46,7 +46,8 @@ const char* usage =
     "                   [--volume-side N] [--csv FILE] [--plot FILE.svg] [--keep DIR]\n"
     "       volsg-bench --suite node [--size WxH] [--frames N] [--error-frames K]\n"
     "                   [--tolerance T] [--planes P,P,...] [--planes-only] [--cases NAME,...]\n"
-    "                   [--kinds dvr,dvr-lit,mip] [--samples-per-plane K] [--scenes DIR]\n"
+    "                   [--kinds dvr,dvr-lit,mip] [--samples-per-plane K] [--no-mip-peaks]\n"
+    "                   [--scenes DIR]\n"
     "                   [--reference-dir DIR] [--compare DIR [--rows CSV]] [--keep DIR]\n"
     "                   [--csv FILE] [--plot FILE.svg]\n"
     "       volsg-bench --suite node --export-views DIR [--size WxH] [--frames N] ...\n"
@@ -64,7 +65,8 @@ const char* usage =
     "                  node CPU per frame, bricks drawn and skipped, texture memory, error\n"
     "  --cases         ml256, chest-ct (default both); --kinds: dvr, dvr-lit, mip (default\n"
     "                  all); --planes-only: only the --planes rows; --samples-per-plane: the\n"
-    "                  rows' Volume.samplesPerPlane (default 1)\n"
+    "                  rows' Volume.samplesPerPlane (default 1); --no-mip-peaks: the MIP rows\n"
+    "                  with Volume.mipPeaks FALSE\n"
     "  --reference-dir keep the reference images there and reuse them on later runs\n"
     "  --export-views  write the cameras, volumes and transfer functions of the node suite\n"
     "                  for viewer/vtk/vtk_volume_bench.py into DIR, and stop\n"
@@ -91,6 +93,7 @@ struct Settings {
     std::vector<std::string> cases, kinds;
     bool planesOnly = false;
     int samplesPerPlane = 1;
+    bool mipPeaks = true;
     std::string scenesDir = VOLSG_BENCH_SCENES_DIR;
     std::string referenceDir, exportDir, compareDir, rowsCsv;
     RenderOptions options;
@@ -278,6 +281,7 @@ int nodeSuite(const Settings& st) {
     ns.kinds = st.kinds;
     ns.planesOnly = st.planesOnly;
     ns.samplesPerPlane = st.samplesPerPlane;
+    ns.mipPeaks = st.mipPeaks;
     ns.referenceDir = st.referenceDir;
     ns.keepDir = st.keepDir;
     ns.compareDir = st.compareDir;
@@ -329,6 +333,8 @@ int run(int argc, char** argv) {
             st.planesOnly = true;
         else if (a == "--samples-per-plane")
             st.samplesPerPlane = args.intValue(a, 1, 64);
+        else if (a == "--no-mip-peaks")
+            st.mipPeaks = false;
         else if (a == "--scenes")
             st.scenesDir = args.value(a);
         else if (a == "--reference-dir")

@@ -97,6 +97,7 @@ struct NodeSetting {
     bool interactive = false;
     bool preIntegrated = false;
     int samplesPerPlane = 1; ///< DVR and MIP
+    bool mipPeaks = true;    ///< MIP: Volume.mipPeaks
 };
 
 std::string modeName(int mode) {
@@ -111,6 +112,7 @@ std::string settingText(const NodeSetting& s) {
     t += s.interactive ? ", interactive" : ", still";
     if (s.preIntegrated) t += ", pre-int";
     if (s.samplesPerPlane > 1) t += format(", %g samples/plane", double(s.samplesPerPlane));
+    if (s.mode == Volume::MIP && !s.mipPeaks) t += ", no peaks";
     return t;
 }
 
@@ -129,8 +131,10 @@ std::vector<NodeSetting> settingsOf(const NodeSuiteSettings& st) {
         }
         for (double p : st.planesPerVoxel)
             out.push_back({mode, lighting, p, false, false});
-        for (std::size_t i = first; i < out.size(); ++i)
+        for (std::size_t i = first; i < out.size(); ++i) {
             out[i].samplesPerPlane = st.samplesPerPlane;
+            out[i].mipPeaks = st.mipPeaks;
+        }
     };
     if (wanted("dvr")) add(Volume::DVR, false);
     if (wanted("dvr-lit")) add(Volume::DVR, true);
@@ -216,6 +220,7 @@ NodeRow measure(LoadedCase& c, const NodeSetting& setting, const Reference& refe
     volume.lighting = setting.lighting;
     volume.preIntegrated = setting.preIntegrated;
     volume.samplesPerPlane = setting.samplesPerPlane;
+    volume.mipPeaks = setting.mipPeaks;
     volume.numPlanes =
         setting.planesPerVoxel > 0.0 ? int(std::ceil(setting.planesPerVoxel * c.diagonalInL0)) : 0;
     volume.interactivePlanes = 0;
@@ -311,6 +316,7 @@ bool parseSetting(const std::string& text, NodeSetting& s) {
     s.lighting = has("DVR lit");
     s.interactive = has("interactive");
     s.preIntegrated = has("pre-int");
+    s.mipPeaks = !has("no peaks");
     s.samplesPerPlane = 1;
     const std::size_t samplesAt = text.find(" samples/plane");
     if (samplesAt != std::string::npos) {

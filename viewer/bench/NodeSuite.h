@@ -28,6 +28,7 @@ struct NodeSuiteSettings {
     std::vector<std::string> kinds; ///< "dvr", "dvr-lit", "mip"; empty = all
     bool planesOnly = false;        ///< only the planesPerVoxel rows (no automatic ones)
     int samplesPerPlane = 1;        ///< the Volume node's samplesPerPlane for every row
+    bool mipPeaks = true;           ///< the Volume node's mipPeaks for the MIP rows
     std::string referenceDir;       ///< reference images are kept there and reused (PFM)
     std::string keepDir;            ///< the Volume node's error frames are written there (PFM)
     std::string compareDir;         ///< VTK's results (vtk-results.tsv and PFM frames) to compare

@@ -92,6 +92,7 @@ uniform vec2 uRegionWeight;
 uniform uint uInfoMask;      // MIP/MINIP: low key bits that carry row * 2 + region
 uniform bool uFacePass;      // drawing the volume box's front faces, for slivers (see main)
 uniform int uSlabSamples;    // DVR: samples per slab, composited inside the fragment
+uniform bool uMipPeaks;      // MIP/MINIP: also sample every voxel-centre crossing in the slab
 uniform float uLayoutNear;   // eye depth of the plane layout's start: plane k at
                              // uLayoutNear + (k + 0.5) * uPlaneSpacing
 
@@ -379,16 +380,26 @@ void main() {
     float v = normalised(dataAt(texCoord(p)), range);
     fragColor = vec4(v * kept, kept, 0.0, 0.0);
 #else
-    // The extreme v over the slab. One part: at the sample point and where the ray crosses the
-    // voxel-centre plane nearest to it along each axis (the trilinear field's kinks, where
-    // peaks of thin structures sit). More parts: the middle of each part and every crossing of
-    // a voxel-centre plane in the slab, so thick slabs still find the peaks.
+    // The extreme v over the slab. With peaks (the default), one part: at the sample point and
+    // where the ray crosses the voxel-centre plane nearest to it along each axis (the trilinear
+    // field's kinks, where peaks of thin structures sit); more parts: the middle of each part
+    // and every crossing of a voxel-centre plane in the slab, so thick slabs still find them.
     float best = MODE == 1 ? -1.0 : 2.0;
     int bestInfo = 0;
     vec3 u0 = voxelCoord(vLocal);
     vec3 du = dir * uInvSpacing;
     int parts = uFacePass ? 1 : max(uSlabSamples, 1);
-    if (parts == 1) {
+    if (!uMipPeaks) {
+        // Evenly spaced samples only (the plane point, or each part's middle), like a ray
+        // caster stepping at that spacing: a quarter of the fetches, thin peaks can be missed.
+        float partLength = thickness / float(parts);
+        for (int j = 0; j < parts; ++j) {
+            float t = uFacePass ? 0.5 * back
+                      : parts == 1 ? 0.0
+                                   : -front + (float(j) + 0.5) * partLength;
+            considerExtreme(vLocal + dir * t, best, bestInfo);
+        }
+    } else if (parts == 1) {
         vec3 tCentre = (floor(u0) + 0.5 - u0) / mix(du, vec3(1e-30), equal(du, vec3(0.0)));
         vec4 ts = vec4(uFacePass ? 0.5 * back : 0.0, tCentre);
         for (int i = 0; i < 4; ++i) {

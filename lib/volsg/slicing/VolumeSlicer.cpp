@@ -718,6 +718,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         program.set("uOrthographic", view.orthographic ? 1 : 0);
         program.set("uPlaneSpacing", float(layout.spacing));
         program.set("uSlabSamples", slabSamples);
+        program.set("uMipPeaks", settings.mipPeaks ? 1 : 0);
         program.set("uLayoutNear", float(layout.nearDepth));
         program.set("uFacePass", 0);
         program.set("uInvL0", float(1.0 / L0));

@@ -23,6 +23,9 @@ struct SlicingSettings {
     /// the fragment; MIP/MINIP also take every voxel-centre crossing in the slab); the
     /// automatic plane count divides by it, keeping 2 samples per voxel.
     int samplesPerPlane = 1;
+    /// MIP, MINIP: also sample every voxel-centre crossing (finds thin peaks); false: only the
+    /// samplesPerPlane evenly spaced samples (cheaper, a ray caster's error at that step).
+    bool mipPeaks = true;
     bool nearest = false; ///< nearest-neighbour data instead of trilinear
     bool preIntegrated = false;
     bool lighting = false;

@@ -88,6 +88,7 @@ void Volume::render(RenderAction& action) {
     settings.numPlanes = numPlanes();
     settings.interactivePlanes = interactivePlanes();
     settings.samplesPerPlane = samplesPerPlane();
+    settings.mipPeaks = mipPeaks();
     settings.nearest = interpolation() == NEAREST;
     settings.preIntegrated = preIntegrated();
     settings.lighting = lighting();

@@ -22,6 +22,10 @@ public:
     /// DVR: samples per plane, composited along each pixel's ray inside the plane's slab
     /// (fewer planes for the same sampling; 0 numPlanes keeps 2 samples per voxel).
     SFInt32 samplesPerPlane{this, "samplesPerPlane", 1};
+    /// MIP, MINIP: also sample where each ray crosses a voxel-centre plane, so thin peaks are
+    /// found at any plane count. FALSE: only samplesPerPlane evenly spaced samples per plane
+    /// (about a quarter of the texture fetches; the error of a ray caster at that step).
+    SFBool mipPeaks{this, "mipPeaks", true};
     SFEnum interpolation{this, "interpolation", interpolationNames, LINEAR};
     SFBool preIntegrated{this, "preIntegrated", false};
     SFBool lighting{this, "lighting", false};
