@@ -1,6 +1,7 @@
 #include <volsg/slicing/TextureStaging.h>
 
 #include <cstdint>
+#include <tuple>
 
 #include <volsg/core/Error.h>
 #include <volsg/slicing/BrickTexels.h>
@@ -16,7 +17,7 @@ std::size_t aligned(std::size_t bytes) {
 } // namespace
 
 StagedGrid::StagedGrid(ref_ptr<const VolumeGrid> data, ref_ptr<const VolumeGrid> tags,
-                       const BrickLayout& layout, double finiteMin, double finiteMax)
+                       const BrickLayout& layout)
     : data_(std::move(data)), tags_(std::move(tags)), buffer_(GL_PIXEL_UNPACK_BUFFER) {
     const std::size_t texelBytes = uploadTexelBytes(data_->type());
     const std::size_t labelBytes = tags_ ? uploadTexelBytes(tags_->type()) : 0;
@@ -31,19 +32,35 @@ StagedGrid::StagedGrid(ref_ptr<const VolumeGrid> data, ref_ptr<const VolumeGrid>
     buffer_.setData(nullptr, total, GL_STREAM_DRAW); // leaves it bound to its target
     void* mapped = glMapBufferRange(GL_PIXEL_UNPACK_BUFFER, 0, GLsizeiptr(total),
                                     GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
-    if (!mapped) {
-        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    if (!mapped)
         throw Error("cannot map a pixel unpack buffer of " + std::to_string(total) +
                     " bytes to stage a volume's textures");
-    }
-    auto* bytes = static_cast<std::uint8_t*>(mapped);
-    for (std::size_t i = 0; i < parts_.size(); ++i) {
-        const Brick& b = layout.bricks()[i];
-        writeBrickTexels(*data_, b, finiteMin, finiteMax, bytes + parts_[i].dataOffset);
-        if (tags_) writeBrickLabels(*tags_, b, bytes + parts_[i].tagOffset);
-    }
+    mapped_ = true;
+    // A mapped pointer is plain memory: another thread may fill it while GL draws on (the
+    // buffer itself is used only after finish() unmapped it).
+    filled_ = std::async(std::launch::async, [this, bricks = layout.bricks(),
+                                              bytes = static_cast<std::uint8_t*>(mapped)] {
+        double lo = 0.0, hi = 0.0; // only Float texels need the finite range
+        if (data_->type() == VoxelType::Float) std::tie(lo, hi) = data_->minMax();
+        for (std::size_t i = 0; i < parts_.size(); ++i) {
+            writeBrickTexels(*data_, bricks[i], lo, hi, bytes + parts_[i].dataOffset);
+            if (tags_) writeBrickLabels(*tags_, bricks[i], bytes + parts_[i].tagOffset);
+        }
+    });
+}
+
+StagedGrid::~StagedGrid() {
+    if (filled_.valid()) filled_.wait(); // then the Buffer deletes (and so unmaps) the buffer
+}
+
+void StagedGrid::finish() {
+    if (!mapped_) return;
+    filled_.get(); // rethrows what the helper threw
+    buffer_.bind();
     const GLboolean intact = glUnmapBuffer(GL_PIXEL_UNPACK_BUFFER);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    mapped_ = false;
     if (intact != GL_TRUE)
         throw Error("a staged volume texture buffer was lost while mapped (GL context event)");
 }

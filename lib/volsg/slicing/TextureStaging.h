@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <vector>
 
@@ -17,14 +18,24 @@
 namespace volsg {
 
 /// One grid's brick texels (and labels) in one pixel unpack buffer, in the layout's brick
-/// order, each brick at a 16-byte aligned offset. GL thread, with the context current.
+/// order, each brick at a 16-byte aligned offset. The GL calls run on the GL thread (context
+/// current); the texels are written into the mapped buffer by a helper thread meanwhile.
 class StagedGrid {
 public:
-    /// Makes the buffer, maps it (write, invalidate) and writes every brick of `layout`
-    /// (BrickTexels.h; `finiteMin`/`finiteMax` replace non-finite Float values). `tags` null:
-    /// no label textures staged. Throws Error when the buffer cannot be mapped or unmapped.
+    /// Makes the buffer and maps it (write, invalidate); a helper thread then writes every
+    /// brick of `layout` into it (BrickTexels.h; Float data with non-finite values replaced by
+    /// the grid's finite minMax, as the direct upload does), while the GL thread goes on
+    /// drawing. `tags` null: no label textures staged. Throws Error when it cannot map.
     StagedGrid(ref_ptr<const VolumeGrid> data, ref_ptr<const VolumeGrid> tags,
-               const BrickLayout& layout, double finiteMin, double finiteMax);
+               const BrickLayout& layout);
+    /// Waits for the helper thread if it is still writing (the buffer is deleted after).
+    ~StagedGrid();
+    StagedGrid(const StagedGrid&) = delete;
+    StagedGrid& operator=(const StagedGrid&) = delete;
+
+    /// Waits for the texels and unmaps the buffer (GL thread): before any upload from it.
+    /// Throws Error when the buffer was lost while mapped.
+    void finish();
 
     const VolumeGrid* data() const { return data_.get(); }
     const VolumeGrid* tags() const { return tags_.get(); }
@@ -55,6 +66,8 @@ private:
     };
     std::vector<Part> parts_;
     Buffer buffer_;
+    bool mapped_ = false;
+    std::future<void> filled_; // the helper thread's writing
 };
 
 /// Per Volume node and context (in the RenderAction's cache): the grid staged for a coming

@@ -9,7 +9,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -578,6 +577,13 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     if (staging.next && staging.next->data() == volume.data.get() &&
         (!staging.next->tags() || staging.next->tags() == volume.tags.get()))
         v.staged = std::move(staging.next); // staged while the previous step was shown
+    if (v.staged) {
+        try {
+            v.staged->finish();
+        } catch (const Error&) {
+            v.staged.reset(); // the buffer was lost: upload directly
+        }
+    }
 
     const bool lighting = settings.lighting && mode == kDvr;
     // Lighting, pre-integration and tag-cell splitting sample up to a voxel (or half a slab)
@@ -889,10 +895,8 @@ void VolumeSlicer::stage(RenderAction& action, const Node& owner,
     const BrickLayout layout(
         data->dimensions(), data->spacing(),
         layoutLimits(*data, tags.get(), shared, staging.textureBudget, staging.guard));
-    double lo = 0.0, hi = 0.0; // only Float data needs its finite range for the texels
-    if (data->type() == VoxelType::Float) std::tie(lo, hi) = data->minMax();
     staging.next.reset(); // one staged grid at a time: its memory before the new one's
-    staging.next = std::make_unique<StagedGrid>(data, labels, layout, lo, hi);
+    staging.next = std::make_unique<StagedGrid>(data, labels, layout);
     ++staging.stagedGrids;
 }
 
