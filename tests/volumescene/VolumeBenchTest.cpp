@@ -123,9 +123,10 @@ TEST_CASE("volsg-bench --suite volumes prints, writes CSV and plots every path a
     REQUIRE(status == 0);
     const auto rows = readCsv(csv);
     // 4 scenes x (3 reference rows + 4 plane counts x 2 pre-integration x 2 modes + the
-    // orthographic truth for shear-warp + 2 thread counts x optimizer off and on).
-    REQUIRE(rows.size() == 1 + 4 * (3 + 16 + 1 + 4));
-    int truthRows = 0, referenceRows = 0, slicingRows = 0, shearWarpRows = 0;
+    // orthographic truth for shear-warp + 2 thread counts x optimizer off and on + the
+    // interactive shear-warp row).
+    REQUIRE(rows.size() == 1 + 4 * (3 + 16 + 1 + 4 + 1));
+    int truthRows = 0, referenceRows = 0, slicingRows = 0, shearWarpRows = 0, interactiveRows = 0;
     for (std::size_t i = 1; i < rows.size(); ++i) {
         const auto& r = rows[i];
         REQUIRE(r.size() == 13);
@@ -139,6 +140,7 @@ TEST_CASE("volsg-bench --suite volumes prints, writes CSV and plots every path a
             CHECK(std::stod(r[6]) < 0.05);
         } else if (r[1] == "shear-warp") {
             ++shearWarpRows;
+            if (r[2].find("interactive (slice step 2)") != std::string::npos) ++interactiveRows;
             CHECK(std::isfinite(std::stod(r[6])));
             CHECK(std::stod(r[4]) > 0.0);
         } else {
@@ -153,7 +155,8 @@ TEST_CASE("volsg-bench --suite volumes prints, writes CSV and plots every path a
     CHECK(truthRows == 8); // perspective for slicing, orthographic for shear-warp
     CHECK(referenceRows == 8);
     CHECK(slicingRows == 64);
-    CHECK(shearWarpRows == 16);
+    CHECK(shearWarpRows == 20);
+    CHECK(interactiveRows == 4);
     const std::string plot = slurp(svg);
     CHECK(plot.find("<svg") != std::string::npos);
     CHECK(plot.find("milliseconds per frame") != std::string::npos);
