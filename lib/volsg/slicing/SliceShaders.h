@@ -207,6 +207,7 @@ vec3 shade(vec3 C, vec3 tc, vec2 range, vec3 local) {
 #endif
 
 #if MODE == 1 || MODE == 2
+vec2 gRange; // untagged: the one row's dataRange, set once per fragment
 // MIP / MINIP: keeps the extreme v of the samples it is given, with the row and BoxClip region
 // of that sample; samples in a removed BoxClip region do not count.
 void considerExtreme(vec3 x, inout float best, inout int bestInfo) {
@@ -217,7 +218,11 @@ void considerExtreme(vec3 x, inout float best, inout int bestInfo) {
         regionHere = all(greaterThanEqual(q, uBoxMin)) && all(lessThanEqual(q, uBoxMax)) ? 1 : 0;
     }
     if ((regionHere == 1 ? uRegionOpacity.y : uRegionOpacity.x) <= 0.0) return;
+#ifdef TAGGED
     float v = normalised(dataAt(texCoord(x)), rangeOf(rowHere));
+#else
+    float v = normalised(dataAt(texCoord(x)), gRange); // one row: its range, fetched once
+#endif
     if (MODE == 1 ? v > best : v < best) {
         best = v;
         bestInfo = rowHere * 2 + regionHere;
@@ -291,6 +296,9 @@ void main() {
 
     int row = rowAt(p);
     vec2 range = rangeOf(row);
+#if MODE == 1 || MODE == 2
+    gRange = range;
+#endif
     // BoxClip: the sample's region, and how much of the slab lies inside the box, so that a
     // slab cut by a box face gets each region's opacity and colour for its own length.
     int region = 0;
@@ -333,8 +341,13 @@ void main() {
         float wOut = uRegionOpacity.x * outLength;
         float weighted = (wIn + wOut) * m; // local length, times the modifiers of tau
         if (!(weighted > 0.0)) continue;
+#ifdef TAGGED
         int rowX = parts == 1 ? row : rowAt(x);
         vec2 rangeX = parts == 1 ? range : rangeOf(rowX);
+#else
+        int rowX = 0; // one row: its range is fetched once per fragment
+        vec2 rangeX = range;
+#endif
         vec3 tc = texCoord(x);
 #ifdef PREINTEGRATED
         float vFront = normalised(dataAt(texCoord(vLocal + dir * a)), rangeX);
