@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <string>
 
 #include "CommandLine.h"
@@ -47,12 +48,14 @@ int run(int argc, char** argv) {
             options.height = s.y;
         } else if (a == "--background")
             options.background = volsg::cli::parseColor(args.value(a));
-        else if (a == "--antialias") // optionally followed by the mode: msaa (default), 2x2
-            options.antialias = !args.empty() && (args.peek() == "msaa" || args.peek() == "2x2" ||
-                                                  args.peek() == "off")
-                                    ? volsg::parseAntialias(args.take())
-                                    : volsg::Antialias::Multisample;
-        else if (a == "--seek-time") {
+        else if (a == "--antialias") { // optionally followed by the mode: msaa (default), 2x2
+            // The next word is the mode unless it is an option or an existing file (the scene),
+            // so a mistyped mode is named as such rather than taken for a second scene.
+            const bool modeFollows = !args.empty() && !args.peek().empty() &&
+                                     args.peek()[0] != '-' && !std::filesystem::exists(args.peek());
+            options.antialias =
+                modeFollows ? volsg::parseAntialias(args.take()) : volsg::Antialias::Multisample;
+        } else if (a == "--seek-time") {
             const std::string text = args.value(a);
             char* end = nullptr;
             options.seekTime = std::strtod(text.c_str(), &end);
