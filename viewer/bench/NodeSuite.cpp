@@ -273,7 +273,8 @@ NodeRow measure(LoadedCase& c, const NodeSetting& setting, const Reference& refe
                       out.processCpuMs, out.nodeCpuMs, out.nodeCpuMaxMs) +
                format("; bricks %g of %g drawn, %g skipped as empty", stats.bricksDrawn,
                       stats.bricksTotal, stats.bricksSkipped) +
-               format("; %g planes", stats.planes);
+               format("; %g planes", stats.planes) +
+               format("; %.0f%% of cells empty", 100.0 * stats.emptyCells);
     if (setting.lighting) row.note += "; lit: error for sanity only (the reference does not shade)";
     return out;
 }

@@ -58,6 +58,7 @@ uniform usampler2D uTagRows;      // tag -> row, 256 x 256
 uniform sampler2D uPreIntegrated; // (mean colour, mean optical depth per L0) over (v_front, v_back)
 uniform sampler1D uPlaneOpacity;  // m(t), PLANE_OPACITY_SIZE samples over t in [0, 1]
 uniform sampler2D uOpaqueDepth;   // a copy of the opaque pass's depth (window depth, 0..1)
+uniform usampler3D uCells;        // 1 per cell of EmptyCells::kCellSize^3 voxels that may emit
 
 uniform vec3 uHalfExtent;   // the volume box is [-uHalfExtent, uHalfExtent] (local)
 uniform vec3 uInvSpacing;   // local -> voxel coordinates: u = (p + uHalfExtent) * uInvSpacing
@@ -93,6 +94,8 @@ uniform uint uInfoMask;      // MIP/MINIP: low key bits that carry row * 2 + reg
 uniform bool uFacePass;      // drawing the volume box's front faces, for slivers (see main)
 uniform int uSlabSamples;    // DVR: samples per slab, composited inside the fragment
 uniform bool uMipPeaks;      // MIP/MINIP: also sample every voxel-centre crossing in the slab
+uniform bool uSkipCells;     // skip samples in cells that cannot emit (EmptyCells)
+uniform float uCellScale;    // 1 / voxels per cell
 uniform float uLayoutNear;   // eye depth of the plane layout's start: plane k at
                              // uLayoutNear + (k + 0.5) * uPlaneSpacing
 
@@ -111,6 +114,14 @@ uniform float uShininess;
 vec3 voxelCoord(vec3 local) { return (local + uHalfExtent) * uInvSpacing; }
 vec3 texCoord(vec3 local) { return (voxelCoord(local) - uTexOrigin) / uTexSize; }
 float dataAt(vec3 tc) { return texture(uData, tc).r * uDataScale + uDataOffset; }
+
+// Whether the cell of a sample at `local` may emit: a trilinear sample reads only voxels
+// of its cell and the layer around it, whose range EmptyCells measured.
+bool cellMayEmit(vec3 local) {
+    ivec3 cell = ivec3(floor(voxelCoord(local) * uCellScale));
+    cell = clamp(cell, ivec3(0), textureSize(uCells, 0) - 1);
+    return texelFetch(uCells, cell, 0).r != 0u;
+}
 
 int rowAt(vec3 local) {
 #ifdef TAGGED
@@ -211,6 +222,7 @@ vec2 gRange; // untagged: the one row's dataRange, set once per fragment
 // MIP / MINIP: keeps the extreme v of the samples it is given, with the row and BoxClip region
 // of that sample; samples in a removed BoxClip region do not count.
 void considerExtreme(vec3 x, inout float best, inout int bestInfo) {
+    if (MODE == 1 && uSkipCells && !cellMayEmit(x)) return; // below every value shown
     int rowHere = rowAt(x);
     int regionHere = 0;
     if (uHasBoxClip) {
@@ -238,6 +250,10 @@ void main() {
         // brick and plane. (A point exactly on a seam would count for both bricks: a set of
         // measure zero.)
         if (any(lessThan(vLocal, uOwnMin)) || any(greaterThan(vLocal, uOwnMax))) discard;
+#if MODE == 0
+        // One sample per plane, at this point: in an empty cell the fragment adds nothing.
+        if (uSkipCells && uSlabSamples <= 1 && !cellMayEmit(vLocal)) discard;
+#endif
     }
     // The pixel's ray through this point: its direction, the path length between this plane
     // and the next along it (local units), and how fast eye depth grows along it.
@@ -366,6 +382,7 @@ void main() {
         } else
 #endif
         {
+            if (uSkipCells && !cellMayEmit(x)) continue; // no optical depth here
             vec4 rgba = classify(normalised(dataAt(tc), rangeX), rowX);
             C = rgba.rgb;
             tauL0 = rgba.a;

@@ -24,6 +24,9 @@ struct SlicingStats {
     int planes = 0;                 ///< proxy planes of the layout (over the whole volume box)
     double planeSpacing = 0.0;      ///< eye units between neighbouring planes
     std::size_t sliceTriangles = 0; ///< triangles drawn, all bricks together
+    /// Share of the 8^3-voxel cells whose samples are skipped as empty (0 when not skipping:
+    /// MINIP, AVERAGE, tagged DVR, pre-integration).
+    double emptyCells = 0.0;
     /// Per-frame CPU work of the node, on a steady clock: the Volume node gathering its state
     /// (data, transfer functions, clips) and the slicer's work before any draw is issued (plane
     /// layout, brick order and emptiness, cutting, vertex assembly, and table rebuilds when a

@@ -26,6 +26,7 @@
 #include <volsg/slicing/BrickLayout.h>
 #include <volsg/slicing/BrickTexels.h>
 #include <volsg/slicing/DataFormat.h>
+#include <volsg/slicing/EmptyCells.h>
 #include <volsg/slicing/PreIntegrationTable.h>
 #include <volsg/slicing/ProxyPlaneCutter.h>
 #include <volsg/slicing/SliceShaders.h>
@@ -53,6 +54,7 @@ enum TextureUnit : GLuint {
     kPlaneOpacityUnit = 5,
     kProjectedUnit = 6,
     kOpaqueDepthUnit = 7,
+    kCellsUnit = 8,
     /// Active while textures are created or uploaded (Texture binds them to the active unit),
     /// so that no upload replaces a texture bound for drawing.
     kUploadUnit = 15
@@ -108,6 +110,7 @@ void setSamplers(const Program& p) {
     p.set("uPlaneOpacity", int(kPlaneOpacityUnit));
     p.set("uProjected", int(kProjectedUnit));
     p.set("uOpaqueDepth", int(kOpaqueDepthUnit));
+    p.set("uCells", int(kCellsUnit));
 }
 
 /// Per GL context: the program variants and the projection target of MIP/MINIP/AVERAGE.
@@ -238,6 +241,11 @@ struct VolumeTextures {
     std::uint64_t tableKey = 0;
     TransferTable table;
     Texture tableTexture, tagRowTexture;
+
+    EmptyCells cells;    ///< measured on first use
+    Texture cellTexture; ///< EmptyCells::flags as R8UI, one texel per cell
+    std::uint64_t cellTableKey = 0;
+    int cellKind = -1; ///< 0 DVR, 1 MIP flags in cellTexture; -1 none yet
 
     bool hasPreIntegration = false;
     PreIntegrationTable preIntegration;
@@ -473,6 +481,24 @@ void prepareTable(VolumeTextures& v, const RayCastVolume& volume, std::uint64_t 
     ++v.totals.transferTableBuilds;
 }
 
+/// The empty-cell flags for this table and kind (DVR: may emit; MIP: may be a shown maximum),
+/// measured on first use and uploaded when the table or the kind changes.
+void prepareCells(VolumeTextures& v, int kind) {
+    if (!v.cells.measured()) v.cells.measure(*v.data, v.tags.get(), v.finiteMin, v.finiteMax);
+    if (v.cellKind == kind && v.cellTableKey == v.tableKey) return;
+    const bool tagged = v.tags && v.table.rows() > 1;
+    v.cells.classify(v.table, tagged, kind == 1);
+    if (!v.cellTexture) {
+        v.cellTexture = Texture(GL_TEXTURE_3D);
+        v.cellTexture.setFilter(GL_NEAREST, GL_NEAREST);
+    }
+    const glm::ivec3 n = v.cells.cells();
+    v.cellTexture.image3D(GL_R8UI, n.x, n.y, n.z, GL_RED_INTEGER, GL_UNSIGNED_BYTE,
+                          v.cells.flags().data());
+    v.cellKind = kind;
+    v.cellTableKey = v.tableKey;
+}
+
 void preparePreIntegration(VolumeTextures& v) {
     if (v.hasPreIntegration) return;
     v.preIntegration.build(v.table.function(0));
@@ -598,6 +624,13 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     staging.tagged = tagged;
     const bool preIntegrated = settings.preIntegrated && mode == kDvr && !tagged;
     if (preIntegrated) preparePreIntegration(v);
+    // Empty cells are skipped per sample where that is exact: DVR samples each part at one
+    // point (not pre-integrated, not split at tag cells); MIP of one row (tags would let a
+    // skipped sample's row matter). MINIP and AVERAGE see every sample.
+    const bool skipCells =
+        settings.skipEmptyCells &&
+        ((mode == kDvr && !tagged && !preIntegrated) || (mode == kMip && !tagged));
+    if (skipCells) prepareCells(v, mode == kMip ? 1 : 0);
     const bool hasPlaneOpacity = mode == kDvr && planeOpacityMatters(volume.planeOpacity);
     if (hasPlaneOpacity) preparePlaneOpacity(v, volume.planeOpacity);
     if (v.filterNearest != settings.nearest) {
@@ -645,6 +678,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     frame.brickTexels = v.layout.largestTexture();
     frame.planes = layout.count;
     frame.planeSpacing = layout.spacing;
+    frame.emptyCells = skipCells ? v.cells.emptyFraction() : 0.0;
 
     // The clip planes in local coordinates.
     if (volume.clipPlanes.size() > std::size_t(kMaxClipPlanes))
@@ -725,6 +759,11 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         program.set("uPlaneSpacing", float(layout.spacing));
         program.set("uSlabSamples", slabSamples);
         program.set("uMipPeaks", settings.mipPeaks ? 1 : 0);
+        program.set("uSkipCells", skipCells ? 1 : 0);
+        if (skipCells) {
+            program.set("uCellScale", 1.0f / float(EmptyCells::kCellSize));
+            v.cellTexture.bind(kCellsUnit);
+        }
         program.set("uLayoutNear", float(layout.nearDepth));
         program.set("uFacePass", 0);
         program.set("uInvL0", float(1.0 / L0));

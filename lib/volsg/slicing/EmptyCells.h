@@ -1,0 +1,49 @@
+#pragma once
+// Empty-space skipping inside a brick: the volume in cells of kCellSize^3 voxels, each with the
+// range of the data (and tags) that a trilinear sample inside it can read, and per transfer
+// table one flag per cell: may it emit? Slice fragments skip the samples that fall in cells
+// that cannot (DVR: their optical depth is zero; MIP: their value is below every value the
+// table shows), and discard themselves when every sample was skipped. So a volume that fits one
+// texture skips its air as a bricked one skips its empty bricks, at the cost of one small
+// integer texture and one nearest fetch per sample.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace volsg {
+
+class TransferTable;
+class VolumeGrid;
+
+class EmptyCells {
+public:
+    static constexpr int kCellSize = 8; ///< voxels per cell along each axis
+
+    /// Measures the cells of a grid (once per grid): per cell the data range (NaN and -Inf
+    /// counted as `lowest`, +Inf as `highest`, as the textures hold them) and the tag range of
+    /// its voxels and of the one voxel layer around it, which trilinear samples in the cell
+    /// also read.
+    void measure(const VolumeGrid& data, const VolumeGrid* tags, double lowest, double highest);
+    bool measured() const { return !dataMin_.empty(); }
+
+    /// One byte per cell, x fastest. DVR (`maximum` false): 1 where the table may give the
+    /// cell's data some opacity. MIP (`maximum` true, untagged): 1 unless the table is
+    /// transparent from the lowest value up to the cell's largest, so that a skipped sample is
+    /// below every sample the table shows and cannot be the maximum that matters.
+    void classify(const TransferTable& table, bool tagged, bool maximum = false);
+    const std::vector<std::uint8_t>& flags() const { return flags_; }
+    glm::ivec3 cells() const { return cells_; }
+    /// The share of cells that cannot emit under the last classify().
+    double emptyFraction() const { return emptyFraction_; }
+
+private:
+    glm::ivec3 cells_{0};
+    std::vector<double> dataMin_, dataMax_;
+    std::vector<int> tagMin_, tagMax_;
+    std::vector<std::uint8_t> flags_;
+    double emptyFraction_ = 0.0;
+};
+
+} // namespace volsg
