@@ -21,6 +21,7 @@
 #include <volsg/context/Context.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/SceneReader.h>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/volumescene/ReferenceScene.h>
 
@@ -34,6 +35,23 @@ double threadCpuMs() {
     timespec t{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+/// CPU time of the whole process in ms (every thread: the engine's, llvmpipe's, the optimizer's).
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+/// The first ShearWarpVolume under `node` (depth first), or null.
+ShearWarpVolume* findShearWarp(Node& node) {
+    if (node.isA<ShearWarpVolume>()) return static_cast<ShearWarpVolume*>(&node);
+    if (auto* children = node.children())
+        for (const auto& child : *children)
+            if (child)
+                if (ShearWarpVolume* found = findShearWarp(*child)) return found;
+    return nullptr;
 }
 
 const char* usage =
@@ -52,7 +70,9 @@ const char* usage =
     "  --shearwarp   also renders the same views with volsg's ShearWarpVolume (one WHOLE\n"
     "                object, TF mode, DVR: shearwarp-CASE.iv), alternating frame by frame with\n"
     "                VolPack, and prints both medians, the ratio and (with --reference) both\n"
-    "                errors\n"
+    "                errors; for the node: the whole frame (GL side and the image read back\n"
+    "                included), the process CPU per frame, and the engine alone\n"
+    "                (ShearWarpRenderer::render: wall time and CPU summed over its threads)\n"
     "  --compare     prints RMSE, PSNR and max abs error (RGB) of one PFM against another\n"
     "  cases: sphere     soft sphere 256^3, 1.4M voxels visible (8%), grey DVR, unshaded\n"
     "         ml         Marschner-Lobb 256^3, smooth colour transfer function, unshaded\n"
@@ -183,6 +203,7 @@ void runCase(const Case& c, const Settings& st) {
     std::unique_ptr<Context> context;
     std::unique_ptr<volsg::Renderer> glRenderer;
     ref_ptr<Node> swRoot;
+    ShearWarpVolume* swNode = nullptr;
     if (st.shearWarp && !c.shaded) {
         std::string text = c.sceneText;
         const std::string volumeNode = "  Volume { }\n";
@@ -192,6 +213,8 @@ void runCase(const Case& c, const Settings& st) {
         const std::filesystem::path swPath = st.out / ("shearwarp-" + c.name + ".iv");
         std::ofstream(swPath) << text;
         swRoot = readScene(swPath.string());
+        swNode = findShearWarp(*swRoot);
+        if (!swNode) throw Error("no ShearWarpVolume in " + swPath.string());
         context = Context::createOffscreen(Backend::OSMesa);
         glRenderer = std::make_unique<volsg::Renderer>();
     }
@@ -203,7 +226,7 @@ void runCase(const Case& c, const Settings& st) {
 
     renderer->render(*views.cameras[0], st.size, st.size); // warm-up: buffers, tables
     if (swRoot) renderShearWarp(0);                        // warm-up: extraction, lists
-    bench::Samples samples, swSamples, cpuSamples;
+    bench::Samples samples, swSamples, cpuSamples, swCpuSamples, engineSamples, engineCpuSamples;
     Image kept, swKept;
     // Alternating frame by frame, so both see the same machine load.
     for (int i = 0; i < st.frames; ++i) {
@@ -214,7 +237,12 @@ void runCase(const Case& c, const Settings& st) {
         cpuSamples.ms.push_back(threadCpuMs() - cpu0);
         if (i == keepFrame) kept = std::move(image);
         if (swRoot) {
+            const double processCpu0 = processCpuMs();
             swSamples.ms.push_back(bench::timeMs([&] { image = renderShearWarp(i); }));
+            swCpuSamples.ms.push_back(processCpuMs() - processCpu0);
+            const ShearWarpStats& stats = swNode->lastFrame()->stats;
+            engineSamples.ms.push_back(stats.engineMs);
+            engineCpuSamples.ms.push_back(stats.engineCpuMs);
             if (i == keepFrame) swKept = std::move(image);
         }
     }
@@ -231,11 +259,26 @@ void runCase(const Case& c, const Settings& st) {
                 "time (its frame time on an idle core)\n",
                 "", cpuSamples.ms.size(), cpuSamples.median(), cpuSamples.min());
 
-    if (swRoot)
+    if (swRoot) {
+        const auto ratio = [](double volpack, double ours) {
+            return volpack / std::max(ours, 1e-9);
+        };
         std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame  (VolPack / "
                     "ShearWarpVolume: %.2f)\n",
                     "ShearWarpVolume, same views", swSamples.ms.size(), swSamples.median(),
-                    swSamples.min(), samples.median() / std::max(swSamples.median(), 1e-9));
+                    swSamples.min(), ratio(samples.median(), swSamples.median()));
+        std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame of process CPU time "
+                    "(every thread)\n",
+                    "", swCpuSamples.ms.size(), swCpuSamples.median(), swCpuSamples.min());
+        std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame  (VolPack / engine: "
+                    "%.2f)\n",
+                    "  engine alone (wall)", engineSamples.ms.size(), engineSamples.median(),
+                    engineSamples.min(), ratio(samples.median(), engineSamples.median()));
+        std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame of CPU time summed "
+                    "over its threads (VolPack CPU / engine CPU: %.2f)\n",
+                    "  engine alone (CPU)", engineCpuSamples.ms.size(), engineCpuSamples.median(),
+                    engineCpuSamples.min(), ratio(cpuSamples.median(), engineCpuSamples.median()));
+    }
     const std::string stem = "volpack-" + c.name + "-frame" + std::to_string(keepFrame);
     writePfm((st.out / (stem + ".pfm")).string(), kept);
     writePng((st.out / (stem + ".png")).string(), kept);

@@ -1,7 +1,10 @@
 #include <volsg/shearwarp/ShearWarpRenderer.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <limits>
 #include <mutex>
 #include <set>
@@ -20,6 +23,16 @@ constexpr float kOpaque = 0.999f;           // pure DVR: a pixel this opaque tak
 constexpr float kSurfaceAlpha = 0.5f;       // a Surface run this opaque is drawn opaque
 constexpr float kSurfaceDepthAlpha = 0.25f; // a Surface sample this opaque may give the depth
 
+/// CPU time of the calling thread in ns.
+std::int64_t threadCpuNs() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return std::int64_t(t.tv_sec) * 1000000000 + std::int64_t(t.tv_nsec);
+}
+
+/// CPU time of the helper threads parallelFor started (the calling thread measures its own).
+std::atomic<std::int64_t> helperCpuNs{0};
+
 template <class F> void parallelFor(int count, F body) {
     if (count <= 1) {
         body(0);
@@ -28,7 +41,11 @@ template <class F> void parallelFor(int count, F body) {
     std::vector<std::thread> threads;
     threads.reserve(std::size_t(count - 1));
     for (int i = 1; i < count; ++i)
-        threads.emplace_back([&body, i] { body(i); });
+        threads.emplace_back([&body, i] {
+            const std::int64_t start = threadCpuNs();
+            body(i);
+            helperCpuNs += threadCpuNs() - start;
+        });
     body(0);
     for (auto& t : threads)
         t.join();
@@ -137,6 +154,21 @@ void ShearWarpRenderer::prepare(ShearWarpObject& o, RenderList& list) {
 
 ShearWarpFrame ShearWarpRenderer::render(std::vector<ShearWarpObject>& objects,
                                          const ShearWarpView& view) {
+    const auto wallStart = std::chrono::steady_clock::now();
+    const std::int64_t cpuStart = threadCpuNs();
+    const std::int64_t helperStart = helperCpuNs.load();
+    ShearWarpFrame frame = renderFrame(objects, view);
+    frame.stats.engineMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallStart)
+            .count();
+    // helperCpuNs is shared by every renderer: concurrent renders may count each other's.
+    frame.stats.engineCpuMs =
+        double(threadCpuNs() - cpuStart + (helperCpuNs.load() - helperStart)) * 1e-6;
+    return frame;
+}
+
+ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& objects,
+                                              const ShearWarpView& view) {
     if (!isOrthographic(view.projection))
         throw Error("ShearWarpVolume renders parallel projections only: use an "
                     "OrthographicCamera (a perspective camera is not supported)");

@@ -74,6 +74,8 @@ public:
     static std::optional<ShearWarpPick> pick(const ShearWarpFrame& frame, int x, int y);
 
 private:
+    ShearWarpFrame renderFrame(std::vector<ShearWarpObject>& objects, const ShearWarpView& view);
+
     struct BandScratch {
         std::vector<glm::vec4> lines[2]; ///< one voxel row resampled along a, and the previous
         std::uint64_t voxels = 0, hidden = 0;

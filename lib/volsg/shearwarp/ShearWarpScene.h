@@ -86,6 +86,10 @@ struct ShearWarpStats {
     std::uint64_t entriesDrawn = 0;
     bool fastPath = false; ///< pure DVR: one pixel buffer
     int sliceStep = 1;     ///< the view's slice step, as used (clamped to the volume)
+    double engineMs = 0.0; ///< wall time of ShearWarpRenderer::render
+    /// CPU time of render() summed over the threads it ran on (its frame time on idle cores
+    /// is between engineCpuMs / threads and engineCpuMs).
+    double engineCpuMs = 0.0;
 };
 
 } // namespace volsg
