@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <limits>
 #include <mutex>
@@ -49,6 +50,21 @@ template <class F> void parallelFor(int count, F body) {
     body(0);
     for (auto& t : threads)
         t.join();
+}
+
+/// Four floats in one SSE/NEON register (GCC/Clang vector extension, no -march needed): the
+/// same IEEE operations per component as glm::vec4's, done at once, so images stay bit for bit.
+using V4 = float __attribute__((vector_size(16)));
+inline V4 loadV4(const glm::vec4& v) {
+    V4 r;
+    std::memcpy(&r, &v, sizeof r);
+    return r;
+}
+inline void storeV4(glm::vec4& d, V4 v) {
+    std::memcpy(&d, &v, sizeof v);
+}
+inline glm::vec4 toVec4(V4 v) {
+    return glm::vec4(v[0], v[1], v[2], v[3]);
 }
 
 bool isOrthographic(const glm::dmat4& p) {
@@ -374,10 +390,17 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         localDepth_[p] = 1.0f;
     };
 
+    // Per band: the intermediate pixels composited, (u0, v0, u1, v1); all others stay empty.
+    std::vector<glm::ivec4> touchedBoxes(std::size_t(threads), glm::ivec4(W, H, 0, 0)); // empty
     parallelFor(threads, [&](int t) {
         BandScratch& s = bands_[std::size_t(t)];
         const int r0 = H * t / threads, r1 = H * (t + 1) / threads;
         const int bandRows = r1 - r0;
+        glm::ivec4 touched(W, H, 0, 0);
+        auto touch = [&touched](int row, int lo, int hi) {
+            touched = glm::ivec4(std::min(touched.x, lo), std::min(touched.y, row),
+                                 std::max(touched.z, hi), std::max(touched.w, row + 1));
+        };
         s.lines[0].assign(std::size_t(W) + 1, glm::vec4(0.0f));
         s.lines[1].assign(std::size_t(W) + 1, glm::vec4(0.0f));
         s.voxels = 0;
@@ -519,51 +542,87 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                     };
                     LineState cur{s.lines[0].data(), W, 0}, prev{s.lines[1].data(), W, 0};
                     int prevB = -2;
-                    auto clearLine = [](LineState& line) {
-                        for (int c = line.lo; c < line.hi; ++c)
-                            line.px[c] = glm::vec4(0.0f);
-                        line.lo = std::numeric_limits<int>::max();
-                        line.hi = 0;
-                    };
                     cur.lo = prev.lo = std::numeric_limits<int>::max();
-                    auto compositeRow = [&](int row, const LineState* a, float wa,
-                                            const LineState* b, float wb) {
-                        if (row < 0 || row >= bandRows) return;
+                    // Composites intermediate band row `row` from line a (weight wa) and line b
+                    // (weight wb; either may be absent) and clears line b: every caller is done
+                    // with it.
+                    auto compositeRow = [&](int row, const LineState* a, float wa, LineState* b,
+                                            float wb) {
                         const int lo = std::min(a ? a->lo : W, b ? b->lo : W);
                         const int hi = std::max(a ? a->hi : 0, b ? b->hi : 0);
+                        glm::vec4* pb = b ? b->px : nullptr;
+                        if (b) {
+                            b->lo = std::numeric_limits<int>::max();
+                            b->hi = 0;
+                        }
+                        if (row < 0 || row >= bandRows || lo >= hi) {
+                            if (pb)
+                                for (int c = lo; c < hi; ++c)
+                                    storeV4(pb[c], V4{});
+                            return;
+                        }
+                        touch(row + r0, lo, hi);
                         const std::size_t rowStart =
                             (std::size_t(row) + std::size_t(r0)) * std::size_t(W);
-                        const glm::vec4 zero(0.0f);
                         const glm::vec4* pa = a ? a->px : nullptr;
-                        const glm::vec4* pb = b ? b->px : nullptr;
+                        // The resampled sample at column c (and line b cleared there); the
+                        // sum of the weighted lines as glm computed it, component by component.
+                        auto sampleAt = [&](int c) {
+                            if (pa && pb) {
+                                const V4 sample = wa * loadV4(pa[c]) + wb * loadV4(pb[c]);
+                                storeV4(pb[c], V4{});
+                                return sample;
+                            }
+                            if (pa) return wa * loadV4(pa[c]);
+                            const V4 sample = wb * loadV4(pb[c]);
+                            storeV4(pb[c], V4{});
+                            return sample;
+                        };
                         if (pureDvr) { // the hot path: front to back ("under"), inlined
                             glm::vec4* g = global_.data() + rowStart;
                             std::int16_t* pickObject = frame.pickObject.data() + rowStart;
                             float* pickSlice = frame.pickSlice.data() + rowStart;
                             std::int32_t* open = nextOpen_.data() + rowStart;
                             const float* limit = hasLimit ? limit_.data() + rowStart : nullptr;
-                            for (int c = lo; c < hi; ++c) {
-                                const glm::vec4 sample =
-                                    (pa ? wa * pa[c] : zero) + (pb ? wb * pb[c] : zero);
-                                if (sample.w <= 0.0f || g[c].w >= kOpaque) continue;
-                                if (limit && !(zSlice > limit[c])) continue; // behind geometry
-                                g[c] += (1.0f - g[c].w) * sample;
-                                if (sample.w >= kPickAlpha && pickObject[c] < 0) {
-                                    pickObject[c] = std::int16_t(oi);
-                                    pickSlice[c] = float(k);
+                            auto composite = [&](auto sampleOf) {
+                                for (int c = lo; c < hi; ++c) {
+                                    const V4 sample = sampleOf(c);
+                                    V4 gc = loadV4(g[c]);
+                                    if (sample[3] <= 0.0f || gc[3] >= kOpaque) continue;
+                                    if (limit && !(zSlice > limit[c])) continue; // behind geometry
+                                    gc += (1.0f - gc[3]) * sample;
+                                    storeV4(g[c], gc);
+                                    if (sample[3] >= kPickAlpha && pickObject[c] < 0) {
+                                        pickObject[c] = std::int16_t(oi);
+                                        pickSlice[c] = float(k);
+                                    }
+                                    if (gc[3] >= kOpaque) { // terminated
+                                        open[c] = c + 1;
+                                        ++opaqueCount_[std::size_t(row + r0)];
+                                    }
                                 }
-                                if (g[c].w >= kOpaque) { // terminated
-                                    open[c] = c + 1;
-                                    ++opaqueCount_[std::size_t(row + r0)];
-                                }
-                            }
+                            };
+                            // One loop per line combination (the branches leave the loop).
+                            if (pa && pb)
+                                composite([&](int c) {
+                                    const V4 sample = wa * loadV4(pa[c]) + wb * loadV4(pb[c]);
+                                    storeV4(pb[c], V4{});
+                                    return sample;
+                                });
+                            else if (pa)
+                                composite([&](int c) { return wa * loadV4(pa[c]); });
+                            else
+                                composite([&](int c) {
+                                    const V4 sample = wb * loadV4(pb[c]);
+                                    storeV4(pb[c], V4{});
+                                    return sample;
+                                });
                             return;
                         }
                         for (int c = lo; c < hi; ++c) {
-                            const glm::vec4 sample =
-                                (pa ? wa * pa[c] : zero) + (pb ? wb * pb[c] : zero);
-                            if (sample.w <= 0.0f) continue;
-                            compositePixel(rowStart + std::size_t(c), sample);
+                            const V4 sample = sampleAt(c);
+                            if (sample[3] <= 0.0f) continue;
+                            compositePixel(rowStart + std::size_t(c), toVec4(sample));
                         }
                     };
 
@@ -575,7 +634,6 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                         if (prevB >= 0 && prevB != int(b) - 1) { // a gap: prev's next row alone
                             compositeRow(prevB + 1 + rowBase, nullptr, 0.0f, &prev,
                                          nextWeight(unsigned(prevB)));
-                            clearLine(prev);
                             prevB = -2;
                         }
                         // Line b: every voxel of row b of both parts, split between its two
@@ -603,20 +661,29 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                             const std::uint8_t* lut2 = tables.lut2.data();
                             const bool direct = tables.kernel == VoxelTables::Kernel::Direct;
                             const std::uint32_t mask = tables.mask;
+                            // Part 0 writes into the empty line: the share a voxel gives its
+                            // right column waits in `pending` until the next voxel adds its own
+                            // share (0 + x + y, as accumulating in the line would give) or a gap
+                            // stores it; no voxel reloads what the previous one stored. Part 1
+                            // adds onto part 0's shares in the line.
+                            const bool fresh = part == 0;
+                            V4 pending{};
+                            int pendingCol = -2;
+                            int firstCol = std::numeric_limits<int>::max(), lastCol = -1;
                             std::uint32_t i = at[part];
                             for (; i < end[part]; ++i) {
                                 const std::uint32_t v = packed[i];
                                 if (PackedVoxel::b(v) != b) break;
-                                glm::vec4 colour;
+                                V4 colour;
                                 if (mip)
-                                    colour = glm::vec4(float(values[i]) * (1.0f / 4095.0f), 0.0f,
-                                                       0.0f, 1.0f);
+                                    colour =
+                                        V4{float(values[i]) * (1.0f / 4095.0f), 0.0f, 0.0f, 1.0f};
                                 else if (direct)
-                                    colour = rgba[PackedVoxel::attributes16(v) & mask];
+                                    colour = loadV4(rgba[PackedVoxel::attributes16(v) & mask]);
                                 else
-                                    colour = rgba[(PackedVoxel::second4(v) << 8) |
-                                                  lut2[PackedVoxel::main12(v)]];
-                                if (colour.w <= 0.0f) continue;
+                                    colour = loadV4(rgba[(PackedVoxel::second4(v) << 8) |
+                                                         lut2[PackedVoxel::main12(v)]]);
+                                if (colour[3] <= 0.0f) continue;
                                 const unsigned va = PackedVoxel::a(v);
                                 const int col = int(va) + colBase;
                                 if (ertActive) { // early ray termination: skip hidden voxels
@@ -643,25 +710,38 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                 }
                                 const float w0 = va == edgeA0 ? edgeA0Weight : 1.0f - fu;
                                 const float w1 = va == edgeA1 ? edgeA1Weight : fu;
-                                cur.px[col] += w0 * colour;
-                                cur.px[col + 1] += w1 * colour;
-                                cur.lo = std::min(cur.lo, col);
-                                cur.hi = std::max(cur.hi, col + 2);
+                                firstCol = std::min(firstCol, col);
+                                lastCol = col;
+                                if (fresh) {
+                                    if (col == pendingCol) {
+                                        storeV4(cur.px[col], pending + w0 * colour);
+                                    } else {
+                                        if (pendingCol >= 0) storeV4(cur.px[pendingCol], pending);
+                                        storeV4(cur.px[col], w0 * colour);
+                                    }
+                                    pending = w1 * colour;
+                                    pendingCol = col + 1;
+                                } else {
+                                    storeV4(cur.px[col], loadV4(cur.px[col]) + w0 * colour);
+                                    storeV4(cur.px[col + 1], loadV4(cur.px[col + 1]) + w1 * colour);
+                                }
+                            }
+                            if (pendingCol >= 0) storeV4(cur.px[pendingCol], pending);
+                            if (lastCol >= 0) {
+                                cur.lo = std::min(cur.lo, firstCol);
+                                cur.hi = std::max(cur.hi, lastCol + 2);
                             }
                             at[part] = i;
                         }
                         compositeRow(int(b) + rowBase, &cur, ownWeight(b),
                                      prevB >= 0 ? &prev : nullptr,
                                      prevB >= 0 ? nextWeight(unsigned(prevB)) : 0.0f);
-                        if (prevB >= 0) clearLine(prev);
                         std::swap(cur, prev);
                         prevB = int(b);
                     }
-                    if (prevB >= 0) {
+                    if (prevB >= 0)
                         compositeRow(prevB + 1 + rowBase, nullptr, 0.0f, &prev,
                                      nextWeight(unsigned(prevB)));
-                        clearLine(prev);
-                    }
                 }
             }
         }
@@ -669,6 +749,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
             for (std::size_t p = std::size_t(r0) * std::size_t(W);
                  p < std::size_t(r1) * std::size_t(W); ++p)
                 flush(p);
+        touchedBoxes[std::size_t(t)] = touched;
     });
     for (const BandScratch& s : bands_) {
         frame.stats.voxelsTouched += s.voxels;
@@ -695,45 +776,85 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     for (const FrameObject& f : fo)
         anySurface = anySurface || f.source->compositing == ObjectCompositing::Surface;
     const glm::dvec2 perPixel(unwarp[0]); // (u, v) per output pixel along x
-    parallelFor(outThreads, [&](int t) {
-        const int y0 = view.height * t / outThreads, y1 = view.height * (t + 1) / outThreads;
-        const glm::vec4* image = global_.data();
-        for (int y = y0; y < y1; ++y) {
-            const glm::dvec2 rowStart(unwarp * glm::dvec3(0.0, y, 1.0));
-            glm::vec4* out = frame.image.pixels.data() + std::size_t(y) * std::size_t(view.width);
-            for (int x = 0; x < view.width; ++x) {
-                glm::dvec2 uv = rowStart + double(x) * perPixel;
-                if (clampU) {
-                    if (uv.x < uLo - 0.5 || uv.x > uHi + 0.5) continue;
-                    uv.x = std::clamp(uv.x, uLo, uHi);
+    // Only output pixels whose bilinear footprint meets the composited part of the intermediate
+    // image can differ from 0 (and depth 1): per output row the warp visits the x range whose
+    // (u, v) lies within that box, widened by 2 for the clamping above (it moves (u, v) by
+    // half a pixel at most), the footprint and rounding. The pixels skipped would be 0 exactly.
+    glm::ivec4 box(W, H, 0, 0);
+    for (const glm::ivec4& b : touchedBoxes)
+        box = glm::ivec4(glm::min(glm::ivec2(box), glm::ivec2(b)),
+                         glm::max(glm::ivec2(box.z, box.w), glm::ivec2(b.z, b.w)));
+    const glm::dvec4 near(box.x - 2.0, box.y - 2.0, box.z + 1.0, box.w + 1.0);
+    std::vector<glm::ivec4> drawnRows(std::size_t(outThreads),
+                                      glm::ivec4(view.width, view.height, 0, 0));
+    if (box.x < box.z && box.y < box.w)
+        parallelFor(outThreads, [&](int t) {
+            const int y0 = view.height * t / outThreads, y1 = view.height * (t + 1) / outThreads;
+            const glm::vec4* image = global_.data();
+            glm::ivec4& drawn = drawnRows[std::size_t(t)];
+            for (int y = y0; y < y1; ++y) {
+                const glm::dvec2 rowStart(unwarp * glm::dvec3(0.0, y, 1.0));
+                double xFrom = 0.0, xTo = view.width;
+                for (int i = 0; i < 2; ++i) { // lo <= rowStart[i] + x perPixel[i] <= hi
+                    const double lo = near[i], hi = near[i + 2];
+                    if (std::abs(perPixel[i]) < 1e-12) {
+                        if (rowStart[i] < lo || rowStart[i] > hi) xTo = -1.0;
+                        continue;
+                    }
+                    double a0 = (lo - rowStart[i]) / perPixel[i],
+                           a1 = (hi - rowStart[i]) / perPixel[i];
+                    if (a0 > a1) std::swap(a0, a1);
+                    xFrom = std::max(xFrom, a0);
+                    xTo = std::min(xTo, a1);
                 }
-                if (clampV) {
-                    if (uv.y < vLo - 0.5 || uv.y > vHi + 0.5) continue;
-                    uv.y = std::clamp(uv.y, vLo, vHi);
-                }
-                if (uv.x <= -1.0 || uv.y <= -1.0 || uv.x >= W || uv.y >= H) continue;
-                const int u = int(uv.x + 1.0) - 1, v = int(uv.y + 1.0) - 1; // floor, uv > -1
-                const float wu = float(uv.x - u), wv = float(uv.y - v);
-                glm::vec4 value;
-                if (u >= 0 && v >= 0 && u + 1 < W && v + 1 < H) { // inside: no bounds checks
-                    const glm::vec4* p = image + std::size_t(v) * std::size_t(W) + std::size_t(u);
-                    value = (p[0] * (1 - wu) + p[1] * wu) * (1 - wv) +
-                            (p[W] * (1 - wu) + p[W + 1] * wu) * wv;
-                } else {
-                    value = (fetch(u, v) * (1 - wu) + fetch(u + 1, v) * wu) * (1 - wv) +
-                            (fetch(u, v + 1) * (1 - wu) + fetch(u + 1, v + 1) * wu) * wv;
-                }
-                out[x] = value;
-                if (anySurface) {
-                    const int nu = int(std::lround(uv.x)), nv = int(std::lround(uv.y));
-                    if (nu >= 0 && nv >= 0 && nu < W && nv < H)
-                        frame.windowDepth[std::size_t(y) * std::size_t(view.width) +
-                                          std::size_t(x)] =
-                            hitDepth_[std::size_t(nv) * std::size_t(W) + std::size_t(nu)];
+                if (xFrom > xTo) continue;
+                const int xBegin = std::max(0, int(std::floor(xFrom)) - 1);
+                const int xEnd = std::min(view.width, int(std::ceil(xTo)) + 2);
+                if (xBegin >= xEnd) continue;
+                drawn = glm::ivec4(std::min(drawn.x, xBegin), std::min(drawn.y, y),
+                                   std::max(drawn.z, xEnd), std::max(drawn.w, y + 1));
+                glm::vec4* out =
+                    frame.image.pixels.data() + std::size_t(y) * std::size_t(view.width);
+                for (int x = xBegin; x < xEnd; ++x) {
+                    glm::dvec2 uv = rowStart + double(x) * perPixel;
+                    if (clampU) {
+                        if (uv.x < uLo - 0.5 || uv.x > uHi + 0.5) continue;
+                        uv.x = std::clamp(uv.x, uLo, uHi);
+                    }
+                    if (clampV) {
+                        if (uv.y < vLo - 0.5 || uv.y > vHi + 0.5) continue;
+                        uv.y = std::clamp(uv.y, vLo, vHi);
+                    }
+                    if (uv.x <= -1.0 || uv.y <= -1.0 || uv.x >= W || uv.y >= H) continue;
+                    const int u = int(uv.x + 1.0) - 1, v = int(uv.y + 1.0) - 1; // floor, uv > -1
+                    const float wu = float(uv.x - u), wv = float(uv.y - v);
+                    if (u >= 0 && v >= 0 && u + 1 < W && v + 1 < H) { // inside: no bounds checks
+                        const glm::vec4* p =
+                            image + std::size_t(v) * std::size_t(W) + std::size_t(u);
+                        storeV4(out[x], (loadV4(p[0]) * (1 - wu) + loadV4(p[1]) * wu) * (1 - wv) +
+                                            (loadV4(p[W]) * (1 - wu) + loadV4(p[W + 1]) * wu) * wv);
+                    } else {
+                        out[x] = (fetch(u, v) * (1 - wu) + fetch(u + 1, v) * wu) * (1 - wv) +
+                                 (fetch(u, v + 1) * (1 - wu) + fetch(u + 1, v + 1) * wu) * wv;
+                    }
+                    if (anySurface) {
+                        const int nu = int(std::lround(uv.x)), nv = int(std::lround(uv.y));
+                        if (nu >= 0 && nv >= 0 && nu < W && nv < H)
+                            frame.windowDepth[std::size_t(y) * std::size_t(view.width) +
+                                              std::size_t(x)] =
+                                hitDepth_[std::size_t(nv) * std::size_t(W) + std::size_t(nu)];
+                    }
                 }
             }
-        }
-    });
+        });
+    frame.drawn = glm::ivec4(view.width, view.height, 0, 0);
+    for (const glm::ivec4& d : drawnRows)
+        frame.drawn =
+            glm::ivec4(glm::min(glm::ivec2(frame.drawn), glm::ivec2(d)),
+                       glm::max(glm::ivec2(frame.drawn.z, frame.drawn.w), glm::ivec2(d.z, d.w)));
+    if (frame.drawn.x >= frame.drawn.z || frame.drawn.y >= frame.drawn.w)
+        frame.drawn = glm::ivec4(0);
+    frame.wroteDepth = anySurface && frame.drawn.x < frame.drawn.z;
     return frame;
 }
 

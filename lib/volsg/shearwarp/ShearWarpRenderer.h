@@ -19,6 +19,10 @@ struct ShearWarpFrame {
     Image image;
     std::vector<float> windowDepth;
     ShearWarpStats stats;
+    /// The output pixels the warp wrote, (x0, y0, x1, y1) exclusive (all 0: none); outside
+    /// them the image is 0 and the depth 1.
+    glm::ivec4 drawn{0};
+    bool wroteDepth = false; ///< windowDepth may hold values < 1 (Surface objects drawn)
 
     // Picking: per intermediate pixel the front-most object that contributed and its slice.
     std::vector<std::int16_t> pickObject;
