@@ -24,6 +24,7 @@
 #include <volsg/reference/ReferenceRayCaster.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/RenderTarget.h>
+#include <volsg/render/ShapeRenderer.h>
 #include <volsg/shearwarp/VoxelListOptimizer.h>
 #include <volsg/volume/VolumeGrid.h>
 #include <volsg/voxelfile/PackedVolume.h>
@@ -131,6 +132,7 @@ struct ShearWarpGl {
     Program program;
     VertexArray vertexArray;
     Texture color, depth;
+    glm::ivec2 size{0}; ///< of the textures' storage
 };
 
 } // namespace
@@ -300,18 +302,22 @@ void ShearWarpVolume::render(RenderAction& action) {
             break;
         }
 
-    // The opaque depth of this frame: voxels behind it do not count.
+    // The opaque depth of this frame: voxels behind it do not count. Only read when something
+    // drew into the depth buffer before (shapes, glTF, slices and shear-warp surfaces count
+    // their draws, as for the Volume slicer); otherwise it is all 1.
     RenderTarget& target = action.target();
-    target.framebuffer().bind(GL_READ_FRAMEBUFFER);
-    view.opaqueWindowDepth.resize(std::size_t(rv.width) * std::size_t(rv.height));
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, rv.width, rv.height, GL_DEPTH_COMPONENT, GL_FLOAT,
-                 view.opaqueWindowDepth.data());
-    for (int y = 0; y < rv.height / 2; ++y) // GL rows are bottom-up
-        std::swap_ranges(view.opaqueWindowDepth.begin() + std::ptrdiff_t(y) * rv.width,
-                         view.opaqueWindowDepth.begin() + std::ptrdiff_t(y + 1) * rv.width,
-                         view.opaqueWindowDepth.begin() +
-                             std::ptrdiff_t(rv.height - 1 - y) * rv.width);
+    if (action.shapeRenderer().drawsLastFrame() > 0) {
+        target.framebuffer().bind(GL_READ_FRAMEBUFFER);
+        view.opaqueWindowDepth.resize(std::size_t(rv.width) * std::size_t(rv.height));
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glReadPixels(0, 0, rv.width, rv.height, GL_DEPTH_COMPONENT, GL_FLOAT,
+                     view.opaqueWindowDepth.data());
+        for (int y = 0; y < rv.height / 2; ++y) // GL rows are bottom-up
+            std::swap_ranges(view.opaqueWindowDepth.begin() + std::ptrdiff_t(y) * rv.width,
+                             view.opaqueWindowDepth.begin() + std::ptrdiff_t(y + 1) * rv.width,
+                             view.opaqueWindowDepth.begin() +
+                                 std::ptrdiff_t(rv.height - 1 - y) * rv.width);
+    }
 
     lastFrame_ = std::make_unique<ShearWarpFrame>(renderer_.render(objects, view));
     lastSources_ = sources;
@@ -343,12 +349,29 @@ void ShearWarpVolume::render(RenderAction& action) {
         gl.color.setFilter(GL_NEAREST, GL_NEAREST);
         gl.depth.setFilter(GL_NEAREST, GL_NEAREST);
     }
+    // Only the rows the warp wrote are uploaded and only its rectangle is drawn: outside it
+    // the image is 0 (nothing to blend) and the depth 1.
+    const ShearWarpFrame& f = *lastFrame_;
+    const glm::ivec4 drawn = f.drawn;
+    if (drawn.x >= drawn.z || drawn.y >= drawn.w) return;
     glActiveTexture(GL_TEXTURE0);
-    gl.color.image2D(GL_RGBA32F, rv.width, rv.height, GL_RGBA, GL_FLOAT,
-                     lastFrame_->image.pixels.data());
-    gl.depth.image2D(GL_R32F, rv.width, rv.height, GL_RED, GL_FLOAT,
-                     lastFrame_->windowDepth.data());
+    if (gl.size != glm::ivec2(rv.width, rv.height)) {
+        gl.color.image2D(GL_RGBA32F, rv.width, rv.height, GL_RGBA, GL_FLOAT, nullptr);
+        gl.depth.image2D(GL_R32F, rv.width, rv.height, GL_RED, GL_FLOAT, nullptr);
+        gl.size = glm::ivec2(rv.width, rv.height);
+    }
+    const std::size_t firstRow = std::size_t(drawn.y) * std::size_t(rv.width);
+    gl.color.subImage(0, drawn.y, 0, rv.width, drawn.w - drawn.y, 1, GL_RGBA, GL_FLOAT,
+                      f.image.pixels.data() + firstRow);
+    if (f.wroteDepth)
+        gl.depth.subImage(0, drawn.y, 0, rv.width, drawn.w - drawn.y, 1, GL_RED, GL_FLOAT,
+                          f.windowDepth.data() + firstRow);
     target.bind();
+    const GLboolean scissorWasOn = glIsEnabled(GL_SCISSOR_TEST);
+    GLint scissorBox[4];
+    glGetIntegerv(GL_SCISSOR_BOX, scissorBox);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(drawn.x, rv.height - drawn.w, drawn.z - drawn.x, drawn.w - drawn.y); // GL: bottom-up
     gl.color.bind(0);
     gl.depth.bind(1);
     gl.program.use();
@@ -359,14 +382,19 @@ void ShearWarpVolume::render(RenderAction& action) {
     gl.program.set("uDepthPass", 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    gl.program.set("uDepthPass", 1);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_FALSE);
-    glDepthFunc(GL_LESS);
+    if (f.wroteDepth) {
+        glDepthFunc(GL_ALWAYS);
+        glDepthMask(GL_TRUE);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        gl.program.set("uDepthPass", 1);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LESS);
+        action.shapeRenderer().countDraw(); // later volumes must read the depth written
+    }
+    if (!scissorWasOn) glDisable(GL_SCISSOR_TEST);
+    glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);
     VertexArray::unbind();
     glActiveTexture(GL_TEXTURE0);
 }
