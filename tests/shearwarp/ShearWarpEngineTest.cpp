@@ -653,3 +653,23 @@ TEST_CASE("thin layers keep every slice when the view skips slices") {
     CHECK(skipped.stats.voxelsTouched < full.stats.voxelsTouched / 2);
     CHECK(rmse(skipped.image, full.image) > 0.01);
 }
+
+TEST_CASE("a recycled frame renders the same image, depth and picks as a fresh one") {
+    auto grid = solidCube();
+    std::vector<ShearWarpObject> objects{cubeSurface(*grid, VoxelRenderMode::Shaded)};
+    ShearWarpRenderer fresh, recycling;
+    // Views whose drawn rectangles differ (zoomed in, then out), so stale pixels would show.
+    const ShearWarpView views[] = {orthoView(32, 8.0, 0.3), orthoView(32, 16.0, 0.9, 0.2),
+                                   orthoView(32, 12.0, -0.4), orthoView(24, 16.0)};
+    ShearWarpFrame last;
+    for (const ShearWarpView& view : views) {
+        const ShearWarpFrame expected = fresh.render(objects, view);
+        recycling.recycle(std::move(last));
+        last = recycling.render(objects, view);
+        CHECK(last.image.pixels == expected.image.pixels); // bit for bit
+        CHECK(last.windowDepth == expected.windowDepth);   // bit for bit
+        CHECK(last.pickObject == expected.pickObject);
+        CHECK(last.drawn == expected.drawn);
+    }
+    CHECK(last.wroteDepth);
+}

@@ -189,9 +189,33 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         throw Error("ShearWarpVolume renders parallel projections only: use an "
                     "OrthographicCamera (a perspective camera is not supported)");
     if (view.width <= 0 || view.height <= 0) throw Error("shear-warp: empty output size");
+    // The buffers of a recycled frame: its image is 0 and its depth 1 outside the rectangle
+    // it drew, so only that is cleared (no allocation, no page faults, no full clear).
     ShearWarpFrame frame;
-    frame.image = Image(view.width, view.height);
-    frame.windowDepth.assign(std::size_t(view.width) * std::size_t(view.height), 1.0f);
+    const std::size_t outPixels = std::size_t(view.width) * std::size_t(view.height);
+    if (spare_.image.width == view.width && spare_.image.height == view.height &&
+        spare_.image.pixels.size() == outPixels && spare_.windowDepth.size() == outPixels) {
+        frame.image = std::move(spare_.image);
+        frame.windowDepth = std::move(spare_.windowDepth);
+        const glm::ivec4 d = spare_.drawn;
+        const std::size_t from = std::size_t(d.y) * std::size_t(view.width);
+        const std::size_t to = std::size_t(d.w) * std::size_t(view.width);
+        if (d.x < d.z && d.y < d.w) {
+            std::fill(frame.image.pixels.begin() + std::ptrdiff_t(from),
+                      frame.image.pixels.begin() + std::ptrdiff_t(to), glm::vec4(0.0f));
+            if (spare_.wroteDepth)
+                std::fill(frame.windowDepth.begin() + std::ptrdiff_t(from),
+                          frame.windowDepth.begin() + std::ptrdiff_t(to), 1.0f);
+        }
+    } else {
+        frame.image = Image(view.width, view.height);
+        frame.windowDepth.assign(outPixels, 1.0f);
+    }
+    frame.pickObject = std::move(spare_.pickObject); // refilled below (capacity kept)
+    frame.pickSlice = std::move(spare_.pickSlice);
+    spare_ = ShearWarpFrame();
+    frame.pickObject.clear();
+    frame.pickSlice.clear();
     if (objects.empty()) return frame;
     for (const auto& o : objects)
         if (!o.object) throw Error("shear-warp: object without voxels");
@@ -330,12 +354,18 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         localDepth_.assign(pixels, 1.0f);
         localObject_.assign(pixels, std::int16_t(-1));
     }
-    hitDepth_.assign(pixels, 1.0f);
+    bool anySurface = false; // depth is written only by Surface objects
+    for (const FrameObject& f : fo)
+        anySurface = anySurface || f.source->compositing == ObjectCompositing::Surface;
+    if (anySurface) hitDepth_.assign(pixels, 1.0f);
     if (pureDvr) {
         nextOpen_.resize(pixels);
         opaqueCount_.assign(std::size_t(H), 0);
-        for (std::size_t p = 0; p < pixels; ++p)
-            nextOpen_[p] = std::int32_t(p % std::size_t(W));
+        for (std::size_t v = 0; v < std::size_t(H); ++v) {
+            std::int32_t* row = nextOpen_.data() + v * std::size_t(W);
+            for (int u = 0; u < W; ++u)
+                row[u] = u;
+        }
     }
     frame.pickObject.assign(pixels, std::int16_t(-1));
     frame.pickSlice.assign(pixels, 0.0f);
@@ -772,9 +802,6 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     const bool clampU = std::abs(sa) < 1e-9, clampV = std::abs(sb) < 1e-9;
     const double uLo = ua0, uHi = ua0 + (na - 1), vLo = vb0, vHi = vb0 + (nb - 1);
     const int outThreads = std::clamp(threads, 1, std::max(1, view.height / 8));
-    bool anySurface = false; // depth is written only by Surface objects
-    for (const FrameObject& f : fo)
-        anySurface = anySurface || f.source->compositing == ObjectCompositing::Surface;
     const glm::dvec2 perPixel(unwarp[0]); // (u, v) per output pixel along x
     // Only output pixels whose bilinear footprint meets the composited part of the intermediate
     // image can differ from 0 (and depth 1): per output row the warp visits the x range whose
@@ -856,6 +883,10 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         frame.drawn = glm::ivec4(0);
     frame.wroteDepth = anySurface && frame.drawn.x < frame.drawn.z;
     return frame;
+}
+
+void ShearWarpRenderer::recycle(ShearWarpFrame&& frame) {
+    spare_ = std::move(frame);
 }
 
 std::optional<ShearWarpPick> ShearWarpRenderer::pick(const ShearWarpFrame& frame, int x, int y) {

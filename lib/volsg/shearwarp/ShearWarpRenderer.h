@@ -75,6 +75,10 @@ public:
     /// change (done by render(); public for the optimizer's tests).
     static void prepare(ShearWarpObject& object, RenderList& list);
 
+    /// Hands back a frame this renderer made and that is no longer needed: the next render()
+    /// reuses its buffers (same output size: only the rectangle it drew is cleared).
+    void recycle(ShearWarpFrame&& frame);
+
     static std::optional<ShearWarpPick> pick(const ShearWarpFrame& frame, int x, int y);
 
 private:
@@ -91,6 +95,7 @@ private:
     std::vector<std::int32_t> nextOpen_; ///< per pixel: itself, or a later column once opaque
     std::vector<int> opaqueCount_;       ///< per intermediate row: stopped pixels
     std::vector<BandScratch> bands_;
+    ShearWarpFrame spare_; ///< recycled buffers
 };
 
 } // namespace volsg

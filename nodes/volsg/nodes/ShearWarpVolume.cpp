@@ -319,6 +319,10 @@ void ShearWarpVolume::render(RenderAction& action) {
                                  std::ptrdiff_t(rv.height - 1 - y) * rv.width);
     }
 
+    if (lastFrame_) { // its buffers serve the new frame
+        renderer_.recycle(std::move(*lastFrame_));
+        lastFrame_.reset();
+    }
     lastFrame_ = std::make_unique<ShearWarpFrame>(renderer_.render(objects, view));
     lastSources_ = sources;
     lastObjects_.clear();
