@@ -10,6 +10,7 @@
 #include <mutex>
 #include <set>
 #include <thread>
+#include <type_traits>
 
 #include <volsg/core/Error.h>
 #include <volsg/shearwarp/PackedVoxel.h>
@@ -696,72 +697,109 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                             // share (0 + x + y, as accumulating in the line would give) or a gap
                             // stores it; no voxel reloads what the previous one stored. Part 1
                             // adds onto part 0's shares in the line.
-                            const bool fresh = part == 0;
-                            V4 pending{};
-                            int pendingCol = -2;
-                            int firstCol = std::numeric_limits<int>::max(), lastCol = -1;
-                            std::uint32_t i = at[part];
-                            for (; i < end[part]; ++i) {
-                                const std::uint32_t v = packed[i];
-                                if (PackedVoxel::b(v) != b) break;
-                                V4 colour;
-                                if (mip)
-                                    colour =
-                                        V4{float(values[i]) * (1.0f / 4095.0f), 0.0f, 0.0f, 1.0f};
-                                else if (direct)
-                                    colour = loadV4(rgba[PackedVoxel::attributes16(v) & mask]);
-                                else
-                                    colour = loadV4(rgba[(PackedVoxel::second4(v) << 8) |
-                                                         lut2[PackedVoxel::main12(v)]]);
-                                if (colour[3] <= 0.0f) continue;
-                                const unsigned va = PackedVoxel::a(v);
-                                const int col = int(va) + colBase;
-                                if (ertActive) { // early ray termination: skip hidden voxels
-                                    if (col < hiddenBefore) {
-                                        ++s.hidden;
-                                        continue;
-                                    }
-                                    if (col > visibleThrough) {
-                                        const bool anyOpen =
-                                            (openA &&
-                                             (openA[col] == col || openA[col + 1] == col + 1)) ||
-                                            (openB &&
-                                             (openB[col] == col || openB[col + 1] == col + 1));
-                                        if (!anyOpen) {
+                            // One loop per (part 0 or 1, early ray termination, lookup kind):
+                            // the invariant branches leave the per-voxel loop and its values
+                            // are locals the compiler keeps in registers.
+                            auto splat = [&](auto freshTag, auto ertTag, auto kindTag) {
+                                constexpr bool fresh = decltype(freshTag)::value;
+                                constexpr bool ert = decltype(ertTag)::value;
+                                constexpr int kind = decltype(kindTag)::value; // 0 MIP, 1 direct
+                                const std::uint32_t* const pk = packed;
+                                glm::vec4* const line = cur.px;
+                                const int cb = colBase;
+                                const unsigned ea0 = edgeA0, ea1 = edgeA1;
+                                const float ew0 = edgeA0Weight, ew1 = edgeA1Weight;
+                                const float left = 1.0f - fu, right = fu;
+                                V4 pending{};
+                                int pendingCol = -2;
+                                int firstCol = std::numeric_limits<int>::max(), lastCol = -1;
+                                std::uint32_t i = at[part];
+                                const std::uint32_t stop = end[part];
+                                for (; i < stop; ++i) {
+                                    const std::uint32_t v = pk[i];
+                                    if (PackedVoxel::b(v) != b) break;
+                                    V4 colour;
+                                    if constexpr (kind == 0)
+                                        colour = V4{float(values[i]) * (1.0f / 4095.0f), 0.0f, 0.0f,
+                                                    1.0f};
+                                    else if constexpr (kind == 1)
+                                        colour = loadV4(rgba[PackedVoxel::attributes16(v) & mask]);
+                                    else
+                                        colour = loadV4(rgba[(PackedVoxel::second4(v) << 8) |
+                                                             lut2[PackedVoxel::main12(v)]]);
+                                    if (colour[3] <= 0.0f) continue;
+                                    const unsigned va = PackedVoxel::a(v);
+                                    const int col = int(va) + cb;
+                                    if constexpr (ert) { // skip hidden voxels
+                                        if (col < hiddenBefore) {
                                             ++s.hidden;
-                                            const int row = int(b) + rowBase;
-                                            hiddenBefore = std::min(firstOpen(row, col),
-                                                                    firstOpen(row + 1, col)) -
-                                                           1;
                                             continue;
                                         }
-                                        visibleThrough = col;
+                                        if (col > visibleThrough) {
+                                            const bool anyOpen =
+                                                (openA && (openA[col] == col ||
+                                                           openA[col + 1] == col + 1)) ||
+                                                (openB &&
+                                                 (openB[col] == col || openB[col + 1] == col + 1));
+                                            if (!anyOpen) {
+                                                ++s.hidden;
+                                                const int row = int(b) + rowBase;
+                                                hiddenBefore = std::min(firstOpen(row, col),
+                                                                        firstOpen(row + 1, col)) -
+                                                               1;
+                                                continue;
+                                            }
+                                            visibleThrough = col;
+                                        }
                                     }
-                                }
-                                const float w0 = va == edgeA0 ? edgeA0Weight : 1.0f - fu;
-                                const float w1 = va == edgeA1 ? edgeA1Weight : fu;
-                                firstCol = std::min(firstCol, col);
-                                lastCol = col;
-                                if (fresh) {
-                                    if (col == pendingCol) {
-                                        storeV4(cur.px[col], pending + w0 * colour);
+                                    const float w0 = va == ea0 ? ew0 : left;
+                                    const float w1 = va == ea1 ? ew1 : right;
+                                    firstCol = std::min(firstCol, col);
+                                    lastCol = col;
+                                    if constexpr (fresh) {
+                                        if (col == pendingCol) {
+                                            storeV4(line[col], pending + w0 * colour);
+                                        } else {
+                                            if (pendingCol >= 0) storeV4(line[pendingCol], pending);
+                                            storeV4(line[col], w0 * colour);
+                                        }
+                                        pending = w1 * colour;
+                                        pendingCol = col + 1;
                                     } else {
-                                        if (pendingCol >= 0) storeV4(cur.px[pendingCol], pending);
-                                        storeV4(cur.px[col], w0 * colour);
+                                        storeV4(line[col], loadV4(line[col]) + w0 * colour);
+                                        storeV4(line[col + 1], loadV4(line[col + 1]) + w1 * colour);
                                     }
-                                    pending = w1 * colour;
-                                    pendingCol = col + 1;
-                                } else {
-                                    storeV4(cur.px[col], loadV4(cur.px[col]) + w0 * colour);
-                                    storeV4(cur.px[col + 1], loadV4(cur.px[col + 1]) + w1 * colour);
                                 }
-                            }
-                            if (pendingCol >= 0) storeV4(cur.px[pendingCol], pending);
-                            if (lastCol >= 0) {
-                                cur.lo = std::min(cur.lo, firstCol);
-                                cur.hi = std::max(cur.hi, lastCol + 2);
-                            }
-                            at[part] = i;
+                                if (pendingCol >= 0) storeV4(line[pendingCol], pending);
+                                if (lastCol >= 0) {
+                                    cur.lo = std::min(cur.lo, firstCol);
+                                    cur.hi = std::max(cur.hi, lastCol + 2);
+                                }
+                                at[part] = i;
+                            };
+                            // Part 0 writes into the empty line: the share a voxel gives its
+                            // right column waits in `pending` until the next voxel adds its own
+                            // share (0 + x + y, as accumulating in the line would give) or a gap
+                            // stores it; no voxel reloads what the previous one stored. Part 1
+                            // adds onto part 0's shares in the line.
+                            auto withKind = [&](auto freshTag, auto ertTag) {
+                                if (mip)
+                                    splat(freshTag, ertTag, std::integral_constant<int, 0>{});
+                                else if (direct)
+                                    splat(freshTag, ertTag, std::integral_constant<int, 1>{});
+                                else
+                                    splat(freshTag, ertTag, std::integral_constant<int, 2>{});
+                            };
+                            auto withErt = [&](auto freshTag) {
+                                if (ertActive)
+                                    withKind(freshTag, std::true_type{});
+                                else
+                                    withKind(freshTag, std::false_type{});
+                            };
+                            if (part == 0)
+                                withErt(std::true_type{});
+                            else
+                                withErt(std::false_type{});
                         }
                         compositeRow(int(b) + rowBase, &cur, ownWeight(b),
                                      prevB >= 0 ? &prev : nullptr,
