@@ -27,6 +27,9 @@ struct SlicingStats {
     /// Share of the 8^3-voxel cells whose samples are skipped as empty (0 when not skipping:
     /// MINIP, AVERAGE, tagged DVR, pre-integration).
     double emptyCells = 0.0;
+    /// Rows of cells cut and drawn instead of whole bricks (lib/volsg/slicing/CellRows.h): the
+    /// empty space around them makes no fragment. 0: whole bricks were cut.
+    int cellRows = 0;
     /// Per-frame CPU work of the node, on a steady clock: the Volume node gathering its state
     /// (data, transfer functions, clips) and the slicer's work before any draw is issued (plane
     /// layout, brick order and emptiness, cutting, vertex assembly, and table rebuilds when a

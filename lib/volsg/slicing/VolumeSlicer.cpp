@@ -25,6 +25,7 @@
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
 #include <volsg/slicing/BrickTexels.h>
+#include <volsg/slicing/CellRows.h>
 #include <volsg/slicing/DataFormat.h>
 #include <volsg/slicing/EmptyCells.h>
 #include <volsg/slicing/PreIntegrationTable.h>
@@ -219,6 +220,11 @@ struct BrickState {
     GLsizei count = 0;
     GLint faceFirst = 0; ///< this frame's front faces on the volume box (sliver rays)
     GLsizei faceCount = 0;
+    /// This frame's rows of non-empty cells (CellRows), each drawn with its own box; empty:
+    /// the whole brick is one draw.
+    std::vector<CellRow> rows;
+    std::vector<GLint> rowFirst;
+    std::vector<GLsizei> rowCount;
 };
 
 /// Per volume (node and grid): bricks, tables and geometry, kept across frames.
@@ -246,6 +252,10 @@ struct VolumeTextures {
     Texture cellTexture; ///< EmptyCells::flags as R8UI, one texel per cell
     std::uint64_t cellTableKey = 0;
     int cellKind = -1; ///< 0 DVR, 1 MIP flags in cellTexture; -1 none yet
+    CellRows rows;     ///< the cell flags dilated by rowsReach
+    int rowsReach = -1;
+    std::uint64_t rowsTableKey = 0;
+    int rowsKind = -1;
 
     bool hasPreIntegration = false;
     PreIntegrationTable preIntegration;
@@ -627,8 +637,10 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     // Empty cells are skipped per sample where that is exact: DVR samples each part at one
     // point (not pre-integrated, not split at tag cells); MIP of one row (tags would let a
     // skipped sample's row matter). MINIP and AVERAGE see every sample.
+    // VOLSG_NO_EMPTY_CELLS=1 turns skipping off, for before/after figures of volsg-bench.
+    static const bool noEmptyCells = std::getenv("VOLSG_NO_EMPTY_CELLS") != nullptr;
     const bool skipCells =
-        settings.skipEmptyCells &&
+        settings.skipEmptyCells && !noEmptyCells &&
         ((mode == kDvr && !tagged && !preIntegrated) || (mode == kMip && !tagged));
     if (skipCells) prepareCells(v, mode == kMip ? 1 : 0);
     const bool hasPlaneOpacity = mode == kDvr && planeOpacityMatters(volume.planeOpacity);
@@ -700,22 +712,73 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
                                   : glm::dvec3(eyeToLocal * glm::dvec4(0.0, 0.0, 0.0, 1.0));
     v.layout.backToFront(viewer, view.orthographic, v.order);
     const glm::dvec3 margin(0.5 * L0); // see uOwnMin in the shader
+    // Empty space out of the geometry: rows of cells that may emit, grown by how far from a
+    // fragment's point its samples reach (none with one sample at the point; half a slab,
+    // along the longest ray of the view, with several parts or MIP's crossings).
+    int rowReach = -1; // -1: whole bricks
+    if (skipCells && settings.skipEmptyCells) {
+        const bool onePoint = slabSamples == 1 && (mode == kDvr || !settings.mipPeaks);
+        double cosMin = 1.0;
+        if (!onePoint && !view.orthographic)
+            for (int c = 0; c < 8; ++c) {
+                const glm::dvec3 corner((c & 1) ? halfExtent.x : -halfExtent.x,
+                                        (c & 2) ? halfExtent.y : -halfExtent.y,
+                                        (c & 4) ? halfExtent.z : -halfExtent.z);
+                const glm::dvec3 eye = glm::dvec3(modelView * glm::dvec4(corner, 1.0));
+                cosMin = std::min(cosMin, -eye.z / std::max(glm::length(eye), 1e-300));
+            }
+        if (onePoint) {
+            rowReach = 0;
+        } else if (cosMin > 0.25) { // else (a wide view from close by) slabs reach too far
+            double localPerEye = 0.0;
+            for (int a = 0; a < 3; ++a)
+                localPerEye = std::max(localPerEye, glm::length(eyeToLocal3[a]));
+            const double halfSlabVoxels = 0.5 * layout.spacing / cosMin * localPerEye / L0;
+            rowReach = int(std::ceil(halfSlabVoxels / EmptyCells::kCellSize));
+        }
+        if (rowReach >= 0 && (v.rowsReach != rowReach || v.rowsKind != v.cellKind ||
+                              v.rowsTableKey != v.cellTableKey)) {
+            v.rows.dilate(v.cells, rowReach);
+            v.rowsReach = rowReach;
+            v.rowsKind = v.cellKind;
+            v.rowsTableKey = v.cellTableKey;
+        }
+    }
+    const glm::dvec3 towardsVolume = view.orthographic ? viewer : -viewer; // the box is centred
+    const int rowAxis = CellRows::axisFor(towardsVolume);
     v.vertices.clear();
     for (const int i : v.order) {
         BrickState& s = v.bricks[std::size_t(i)];
         s.count = 0;
         s.faceCount = 0;
+        s.rows.clear();
+        s.rowFirst.clear();
+        s.rowCount.clear();
         if (mode == kDvr && !s.mayEmit) {
             ++frame.bricksSkipped;
             continue;
         }
         const Brick& b = v.layout.bricks()[std::size_t(i)];
-        ProxyPlaneCutter::cutInto(b.boxMin - margin, b.boxMax + margin, modelView, layout,
-                                  clipDepth.x, v.slices);
         s.first = GLint(v.vertices.size());
-        s.count = GLsizei(v.slices.vertices.size());
-        v.vertices.insert(v.vertices.end(), v.slices.vertices.begin(), v.slices.vertices.end());
-        frame.sliceTriangles += v.slices.vertices.size() / 3;
+        if (rowReach >= 0) {
+            v.rows.rowsOf(b, rowAxis, grid.spacing(), halfExtent, viewer, view.orthographic,
+                          s.rows);
+            for (const CellRow& row : s.rows) {
+                ProxyPlaneCutter::cutInto(row.boxMin - margin, row.boxMax + margin, modelView,
+                                          layout, clipDepth.x, v.slices);
+                s.rowFirst.push_back(GLint(v.vertices.size()));
+                s.rowCount.push_back(GLsizei(v.slices.vertices.size()));
+                v.vertices.insert(v.vertices.end(), v.slices.vertices.begin(),
+                                  v.slices.vertices.end());
+            }
+            frame.cellRows += int(s.rows.size());
+        } else {
+            ProxyPlaneCutter::cutInto(b.boxMin - margin, b.boxMax + margin, modelView, layout,
+                                      clipDepth.x, v.slices);
+            v.vertices.insert(v.vertices.end(), v.slices.vertices.begin(), v.slices.vertices.end());
+        }
+        s.count = GLsizei(v.vertices.size()) - s.first;
+        frame.sliceTriangles += std::size_t(s.count) / 3;
         s.faceFirst = GLint(v.vertices.size());
         appendFrontFaces(b, v.layout.grid(), viewer, view.orthographic, v.vertices);
         // Clip planes that rays cross into the kept side bound the visible part too.
@@ -867,9 +930,20 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
             if (tagged) s.tags.bind(kTagUnit);
             program.set("uTexOrigin", glm::vec3(b.firstVoxel));
             program.set("uTexSize", glm::vec3(b.voxelCount));
-            program.set("uOwnMin", glm::vec3(b.boxMin));
-            program.set("uOwnMax", glm::vec3(b.boxMax));
-            glDrawArrays(GL_TRIANGLES, s.first, s.count);
+            if (s.rows.empty()) {
+                program.set("uOwnMin", glm::vec3(b.boxMin));
+                program.set("uOwnMax", glm::vec3(b.boxMax));
+                glDrawArrays(GL_TRIANGLES, s.first, s.count);
+            } else {
+                for (std::size_t r = 0; r < s.rows.size(); ++r) {
+                    if (s.rowCount[r] == 0) continue;
+                    program.set("uOwnMin", glm::vec3(s.rows[r].boxMin));
+                    program.set("uOwnMax", glm::vec3(s.rows[r].boxMax));
+                    glDrawArrays(GL_TRIANGLES, s.rowFirst[r], s.rowCount[r]);
+                }
+                program.set("uOwnMin", glm::vec3(b.boxMin)); // the faces: the whole brick
+                program.set("uOwnMax", glm::vec3(b.boxMax));
+            }
             if (s.faceCount > 0) {
                 // No ray has both plane and face fragments, so this order is as good as any.
                 program.set("uFacePass", 1);
