@@ -55,21 +55,9 @@ RayCastVolume describeVolume(const Volume& volume, const State& state) {
     out.mode = volume.mode();
     for (const glm::vec2& p : volume.planeOpacity.getValues())
         out.planeOpacity.push_back({double(p.x), double(p.y)});
-    if (const StateEntry* entry = state.nearest<BoxClip>()) {
-        const auto& clip = static_cast<const BoxClip&>(*entry->node);
-        RayCastBoxClip box;
-        // The box is in the BoxClip's own coordinates, which its model matrix maps to world.
-        box.origin = glm::dvec3(clip.origin());
-        box.extent = glm::dvec3(clip.extent());
-        box.model = entry->model;
-        box.insideOpacity = clip.insideOpacity();
-        box.outsideOpacity = clip.outsideOpacity();
-        box.insideColor = glm::dvec3(clip.insideColor());
-        box.insideColorWeight = clip.insideColorWeight();
-        box.outsideColor = glm::dvec3(clip.outsideColor());
-        box.outsideColorWeight = clip.outsideColorWeight();
-        out.boxClip = box;
-    }
+    // The box is in the BoxClip's own coordinates, which its model matrix maps to world.
+    if (const StateEntry* entry = state.nearest<BoxClip>())
+        out.boxClip = static_cast<const BoxClip&>(*entry->node).describe(entry->model);
     // ClipPlane::doAction puts only planes that are on in scope.
     for (const StateEntry* entry : state.all<ClipPlane>())
         out.clipPlanes.push_back(ClipPlane::worldPlane(

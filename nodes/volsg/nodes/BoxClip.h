@@ -3,6 +3,7 @@
 // scope (the seed's box clipping); with opacity 0 it also removes polygon geometry.
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
+#include <volsg/reference/ReferenceRayCaster.h>
 
 namespace volsg {
 
@@ -18,6 +19,10 @@ public:
     SFFloat insideColorWeight{this, "insideColorWeight", 0.0f};
     SFColor outsideColor{this, "outsideColor", glm::vec3(1.0f)};
     SFFloat outsideColorWeight{this, "outsideColorWeight", 0.0f};
+
+    /// The box as the rendering model takes it; `model` maps its coordinates to world (the
+    /// model matrix at this node in the state).
+    RayCastBoxClip describe(const glm::dmat4& model) const;
 
     void doAction(Action& action) override;
 

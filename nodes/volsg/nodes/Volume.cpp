@@ -68,20 +68,8 @@ void Volume::render(RenderAction& action) {
 
     for (const glm::vec2& p : planeOpacity.getValues())
         volume.planeOpacity.push_back({double(p.x), double(p.y)});
-    if (const StateEntry* e = state.nearest<BoxClip>()) {
-        const auto& b = static_cast<const BoxClip&>(*e->node);
-        RayCastBoxClip clip;
-        clip.origin = glm::dvec3(b.origin());
-        clip.extent = glm::dvec3(b.extent());
-        clip.model = e->model; // the box is in the BoxClip's own coordinates
-        clip.insideOpacity = b.insideOpacity();
-        clip.outsideOpacity = b.outsideOpacity();
-        clip.insideColor = glm::dvec3(b.insideColor());
-        clip.insideColorWeight = b.insideColorWeight();
-        clip.outsideColor = glm::dvec3(b.outsideColor());
-        clip.outsideColorWeight = b.outsideColorWeight();
-        volume.boxClip = clip;
-    }
+    if (const StateEntry* e = state.nearest<BoxClip>()) // in the BoxClip's own coordinates
+        volume.boxClip = static_cast<const BoxClip&>(*e->node).describe(e->model);
     action.clipPlanesInScope(volume.clipPlanes);
 
     SlicingSettings settings;
