@@ -59,6 +59,16 @@ ShearWarpObject objectOf(const VolumeGrid& grid, const TransferFunction1D& tf,
     return o;
 }
 
+/// Marschner-Lobb's test colours: a blue-to-orange ramp, alpha 0 to 0.2.
+TransferFunction1D smoothColourRamp() {
+    TransferFunction1D tf;
+    tf.setChannel(TransferFunction1D::Red, {{0.0, 0.1}, {0.5, 0.9}, {1.0, 1.0}});
+    tf.setChannel(TransferFunction1D::Green, {{0.0, 0.3}, {0.5, 0.6}, {1.0, 0.9}});
+    tf.setChannel(TransferFunction1D::Blue, {{0.0, 1.0}, {0.5, 0.4}, {1.0, 0.1}});
+    tf.setChannel(TransferFunction1D::Alpha, {{0.0, 0.0}, {1.0, 0.2}});
+    return tf;
+}
+
 glm::vec4 centre(const ShearWarpFrame& f) {
     return f.image.at(f.image.width / 2, f.image.height / 2);
 }
@@ -264,11 +274,7 @@ TEST_CASE("plain transfer-function DVR and MIP converge to the reference") {
     // Marschner-Lobb 32^3, oblique view, 64 x 64: measured RMSE 0.012 (DVR) and 0.008 (MIP),
     // mostly along the slanted silhouette, which the intermediate image resolves to one voxel.
     auto grid = makeMarschnerLobb(32);
-    TransferFunction1D tf;
-    tf.setChannel(TransferFunction1D::Red, {{0.0, 0.1}, {0.5, 0.9}, {1.0, 1.0}});
-    tf.setChannel(TransferFunction1D::Green, {{0.0, 0.3}, {0.5, 0.6}, {1.0, 0.9}});
-    tf.setChannel(TransferFunction1D::Blue, {{0.0, 1.0}, {0.5, 0.4}, {1.0, 0.1}});
-    tf.setChannel(TransferFunction1D::Alpha, {{0.0, 0.0}, {1.0, 0.2}});
+    const TransferFunction1D tf = smoothColourRamp();
     const ShearWarpView view = orthoView(64, 1.8, 0.5, 0.3);
     ShearWarpRenderer renderer;
     std::vector<ShearWarpObject> objects{objectOf(*grid, tf)};
@@ -603,11 +609,7 @@ TEST_CASE("a slice step of 2 stays near the reference on a smooth volume, MIP in
     // Marschner-Lobb 32^3 as in the convergence test. Limits: twice the error of every slice
     // plus 0.01 (measured in the messages).
     auto grid = makeMarschnerLobb(32);
-    TransferFunction1D tf;
-    tf.setChannel(TransferFunction1D::Red, {{0.0, 0.1}, {0.5, 0.9}, {1.0, 1.0}});
-    tf.setChannel(TransferFunction1D::Green, {{0.0, 0.3}, {0.5, 0.6}, {1.0, 0.9}});
-    tf.setChannel(TransferFunction1D::Blue, {{0.0, 1.0}, {0.5, 0.4}, {1.0, 0.1}});
-    tf.setChannel(TransferFunction1D::Alpha, {{0.0, 0.0}, {1.0, 0.2}});
+    const TransferFunction1D tf = smoothColourRamp();
     ShearWarpView view = orthoView(64, 1.8, 0.5, 0.3);
     ShearWarpRenderer renderer;
     std::vector<ShearWarpObject> objects{objectOf(*grid, tf)};
