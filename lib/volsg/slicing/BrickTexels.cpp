@@ -26,15 +26,10 @@ template <class T> void copyRows(const VolumeGrid& grid, const Brick& b, void* o
         std::memcpy(to, src, b.texels() * sizeof(T));
         return;
     }
-    const glm::ivec3 d = grid.dimensions();
     const std::size_t rowBytes = std::size_t(b.voxelCount.x) * sizeof(T);
     for (int k = 0; k < b.voxelCount.z; ++k)
         for (int j = 0; j < b.voxelCount.y; ++j) {
-            const std::size_t row =
-                std::size_t(b.firstVoxel.x) +
-                std::size_t(d.x) * (std::size_t(b.firstVoxel.y + j) +
-                                    std::size_t(d.y) * std::size_t(b.firstVoxel.z + k));
-            std::memcpy(to, src + row, rowBytes);
+            std::memcpy(to, src + brickRowStart(grid, b, j, k), rowBytes);
             to += rowBytes;
         }
 }

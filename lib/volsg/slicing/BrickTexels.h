@@ -23,16 +23,20 @@ template <class T> double replacedValue(T x, double lowest, double highest) {
     return double(x);
 }
 
+/// The grid index of the first voxel of the brick's texel row (j, k).
+inline std::size_t brickRowStart(const VolumeGrid& grid, const Brick& b, int j, int k) {
+    const glm::ivec3 d = grid.dimensions();
+    return std::size_t(b.firstVoxel.x) +
+           std::size_t(d.x) * (std::size_t(b.firstVoxel.y + j) +
+                               std::size_t(d.y) * std::size_t(b.firstVoxel.z + k));
+}
+
 /// Calls f(value) for every voxel of the brick's texture, x fastest.
 template <class T, class F> void forEachBrickVoxel(const VolumeGrid& grid, const Brick& b, F&& f) {
     const auto src = grid.data<T>();
-    const glm::ivec3 d = grid.dimensions();
     for (int k = 0; k < b.voxelCount.z; ++k)
         for (int j = 0; j < b.voxelCount.y; ++j) {
-            const std::size_t row =
-                std::size_t(b.firstVoxel.x) +
-                std::size_t(d.x) * (std::size_t(b.firstVoxel.y + j) +
-                                    std::size_t(d.y) * std::size_t(b.firstVoxel.z + k));
+            const std::size_t row = brickRowStart(grid, b, j, k);
             for (int i = 0; i < b.voxelCount.x; ++i)
                 f(src[row + std::size_t(i)]);
         }
