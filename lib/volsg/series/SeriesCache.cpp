@@ -7,6 +7,12 @@
 #include <tuple>
 #include <vector>
 
+#if defined(__linux__)
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 #include <volsg/core/Error.h>
 #include <volsg/core/KeyMixing.h>
 #include <volsg/series/SpillFile.h>
@@ -381,6 +387,10 @@ ref_ptr<VoxelObject> SeriesCache::produceLocked(const Key& key, const Extraction
 
 bool SeriesCache::spillOne(std::unique_lock<std::mutex>& lock) {
     if (stats_.memoryBytes <= settings_.memoryBudget) return false;
+    return evictOne(lock, false);
+}
+
+bool SeriesCache::evictOne(std::unique_lock<std::mutex>& lock, bool outsideWindowOnly) {
     const auto window = windowSteps();
     // Victim: lists nobody wants any more first, then steps outside the prefetch window
     // (least recently used first), then the window's farthest step.
@@ -393,6 +403,7 @@ bool SeriesCache::spillOne(std::unique_lock<std::mutex>& lock) {
         const auto w = std::find_if(window.begin(), window.end(),
                                     [&](const auto& p) { return p.first == it->first.first; });
         const int inWindow = w != window.end() ? 1 : 0;
+        if (inWindow && outsideWindowOnly) continue;
         const std::uint64_t order =
             inWindow ? std::uint64_t(kMaxPrefetchSteps - w->second) : e.lastUse;
         const std::tuple<int, int, std::uint64_t> rank{wanted, inWindow, order};
@@ -474,12 +485,16 @@ bool SeriesCache::prefetchOne(std::unique_lock<std::mutex>& lock) {
                 }
                 continue;
             }
-            // Bring a step in only while it fits the budget, so spilling and prefetching
-            // never chase each other.
+            // Bring a step in only while it fits the budget; to make it fit, lists of steps
+            // outside the window go first (spilled or dropped). Window steps are never
+            // evicted for each other, so spilling and prefetching never chase each other.
             const bool fits = e.diskBytes > 0
                                   ? stats_.memoryBytes + e.bytes <= settings_.memoryBudget
                                   : stats_.memoryBytes < settings_.memoryBudget;
-            if (!fits) continue;
+            if (!fits) {
+                if (evictOne(lock, true)) return true;
+                continue;
+            }
             const ExtractionSpec specCopy = spec; // wanted_ may change while unlocked
             try {
                 produceLocked(key, specCopy, lock, true);
@@ -501,6 +516,12 @@ bool SeriesCache::prefetchOne(std::unique_lock<std::mutex>& lock) {
 }
 
 void SeriesCache::workerLoop() {
+#if defined(__linux__)
+    // Below the render threads: on a machine with few cores, reading the next step back
+    // must not slow down the frame being drawn (the render thread reads a step itself when
+    // the worker had no time for it). Linux nice values are per thread.
+    setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
+#endif
     std::unique_lock lock(mutex_);
     while (!stop_) {
         dirty_ = false;

@@ -152,6 +152,9 @@ private:
 
     void workerLoop();
     bool spillOne(std::unique_lock<std::mutex>& lock);
+    /// Spills or drops one list that is not the shown step's (with `outsideWindowOnly`, nor
+    /// a prefetch window step's), the least useful first; false when there is none.
+    bool evictOne(std::unique_lock<std::mutex>& lock, bool outsideWindowOnly);
     bool prefetchOne(std::unique_lock<std::mutex>& lock);
     void trimGrids();
     std::vector<std::pair<int, int>> windowSteps() const; ///< (step, distance), nearest first
