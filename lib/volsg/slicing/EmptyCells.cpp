@@ -13,49 +13,80 @@ namespace volsg {
 
 namespace {
 
-/// The voxels a trilinear sample in cell c reads: the cell's and one layer around it.
-Brick cellReach(const glm::ivec3& c, const glm::ivec3& dimensions) {
-    Brick b;
-    const glm::ivec3 lo = glm::max(c * EmptyCells::kCellSize - 1, glm::ivec3(0));
-    const glm::ivec3 hi = glm::min((c + 1) * EmptyCells::kCellSize + 1, dimensions);
-    b.firstVoxel = lo;
-    b.voxelCount = hi - lo;
-    return b;
+/// Per cell, the (min, max) over the voxels a trilinear sample in it reads: its own 8^3 and
+/// the layer of one voxel around it, i.e. voxels [8c - 1, 8c + 9) clamped, along every axis.
+/// A box range is separable: rows along x first (per row, per cell), then those along y, then
+/// along z, so each voxel is read once. `valueAt(index)` gives voxel `index` as a double.
+template <class V>
+void measureRanges(const glm::ivec3& d, const glm::ivec3& cells, V&& valueAt,
+                   std::vector<double>& minOut, std::vector<double>& maxOut) {
+    constexpr int n = EmptyCells::kCellSize;
+    const auto lowOf = [](int c) { return std::max(c * n - 1, 0); };
+    const auto highOf = [](int c, int size) { return std::min((c + 1) * n + 1, size); };
+    const double inf = std::numeric_limits<double>::infinity();
+    // x: per (cell x, y, z)
+    std::vector<double> loX(std::size_t(cells.x) * d.y * d.z, inf), hiX(loX.size(), -inf);
+    for (int z = 0; z < d.z; ++z)
+        for (int y = 0; y < d.y; ++y) {
+            const std::size_t row = std::size_t(d.x) * (std::size_t(y) + std::size_t(d.y) * z);
+            for (int c = 0; c < cells.x; ++c) {
+                double lo = inf, hi = -inf;
+                for (int x = lowOf(c); x < highOf(c, d.x); ++x) {
+                    const double v = valueAt(row + std::size_t(x));
+                    lo = std::min(lo, v);
+                    hi = std::max(hi, v);
+                }
+                const std::size_t o =
+                    std::size_t(c) + std::size_t(cells.x) * (y + std::size_t(d.y) * z);
+                loX[o] = lo;
+                hiX[o] = hi;
+            }
+        }
+    // y: per (cell x, cell y, z)
+    std::vector<double> loY(std::size_t(cells.x) * cells.y * d.z, inf), hiY(loY.size(), -inf);
+    for (int z = 0; z < d.z; ++z)
+        for (int cy = 0; cy < cells.y; ++cy)
+            for (int y = lowOf(cy); y < highOf(cy, d.y); ++y)
+                for (int cx = 0; cx < cells.x; ++cx) {
+                    const std::size_t from =
+                        std::size_t(cx) + std::size_t(cells.x) * (y + std::size_t(d.y) * z);
+                    const std::size_t to =
+                        std::size_t(cx) + std::size_t(cells.x) * (cy + std::size_t(cells.y) * z);
+                    loY[to] = std::min(loY[to], loX[from]);
+                    hiY[to] = std::max(hiY[to], hiX[from]);
+                }
+    // z: per cell
+    const std::size_t plane = std::size_t(cells.x) * cells.y;
+    for (int cz = 0; cz < cells.z; ++cz)
+        for (int z = lowOf(cz); z < highOf(cz, d.z); ++z)
+            for (std::size_t i = 0; i < plane; ++i) {
+                const std::size_t to = i + plane * std::size_t(cz);
+                minOut[to] = std::min(minOut[to], loY[i + plane * std::size_t(z)]);
+                maxOut[to] = std::max(maxOut[to], hiY[i + plane * std::size_t(z)]);
+            }
 }
 
 template <class T>
 void measureData(const VolumeGrid& grid, const glm::ivec3& cells, double lowest, double highest,
                  std::vector<double>& minOut, std::vector<double>& maxOut) {
-    std::size_t n = 0;
-    for (int z = 0; z < cells.z; ++z)
-        for (int y = 0; y < cells.y; ++y)
-            for (int x = 0; x < cells.x; ++x, ++n) {
-                double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-                forEachBrickVoxel<T>(grid, cellReach({x, y, z}, grid.dimensions()), [&](T v) {
-                    const double d = replacedValue(v, lowest, highest);
-                    lo = std::min(lo, d);
-                    hi = std::max(hi, d);
-                });
-                minOut[n] = lo;
-                maxOut[n] = hi;
-            }
+    const auto voxels = grid.data<T>();
+    measureRanges(
+        grid.dimensions(), cells,
+        [&](std::size_t i) { return replacedValue(voxels[i], lowest, highest); }, minOut, maxOut);
 }
 
 template <class T>
 void measureTags(const VolumeGrid& tags, const glm::ivec3& cells, std::vector<int>& minOut,
                  std::vector<int>& maxOut) {
-    std::size_t n = 0;
-    for (int z = 0; z < cells.z; ++z)
-        for (int y = 0; y < cells.y; ++y)
-            for (int x = 0; x < cells.x; ++x, ++n) {
-                int lo = std::numeric_limits<int>::max(), hi = std::numeric_limits<int>::min();
-                forEachBrickVoxel<T>(tags, cellReach({x, y, z}, tags.dimensions()), [&](T v) {
-                    lo = std::min(lo, int(v));
-                    hi = std::max(hi, int(v));
-                });
-                minOut[n] = lo;
-                maxOut[n] = hi;
-            }
+    const auto voxels = tags.data<T>();
+    std::vector<double> lo(minOut.size(), std::numeric_limits<double>::infinity());
+    std::vector<double> hi(maxOut.size(), -std::numeric_limits<double>::infinity());
+    measureRanges(
+        tags.dimensions(), cells, [&](std::size_t i) { return double(voxels[i]); }, lo, hi);
+    for (std::size_t i = 0; i < lo.size(); ++i) {
+        minOut[i] = int(lo[i]);
+        maxOut[i] = int(hi[i]);
+    }
 }
 
 } // namespace
@@ -64,8 +95,8 @@ void EmptyCells::measure(const VolumeGrid& data, const VolumeGrid* tags, double 
                          double highest) {
     cells_ = (data.dimensions() + (kCellSize - 1)) / kCellSize;
     const std::size_t count = std::size_t(cells_.x) * std::size_t(cells_.y) * std::size_t(cells_.z);
-    dataMin_.assign(count, 0.0);
-    dataMax_.assign(count, 0.0);
+    dataMin_.assign(count, std::numeric_limits<double>::infinity());
+    dataMax_.assign(count, -std::numeric_limits<double>::infinity());
     switch (data.type()) {
     case VoxelType::UByte:
         measureData<std::uint8_t>(data, cells_, lowest, highest, dataMin_, dataMax_);

@@ -35,6 +35,8 @@ public:
     void classify(const TransferTable& table, bool tagged, bool maximum = false);
     const std::vector<std::uint8_t>& flags() const { return flags_; }
     glm::ivec3 cells() const { return cells_; }
+    /// Cell i's (min, max) data as measured (x fastest).
+    glm::dvec2 dataRange(std::size_t cell) const { return {dataMin_[cell], dataMax_[cell]}; }
     /// The share of cells that cannot emit under the last classify().
     double emptyFraction() const { return emptyFraction_; }
 

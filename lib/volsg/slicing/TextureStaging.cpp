@@ -39,15 +39,17 @@ StagedGrid::StagedGrid(ref_ptr<const VolumeGrid> data, ref_ptr<const VolumeGrid>
     mapped_ = true;
     // A mapped pointer is plain memory: another thread may fill it while GL draws on (the
     // buffer itself is used only after finish() unmapped it).
-    filled_ = std::async(std::launch::async, [this, bricks = layout.bricks(),
-                                              bytes = static_cast<std::uint8_t*>(mapped)] {
-        double lo = 0.0, hi = 0.0; // only Float texels need the finite range
-        if (data_->type() == VoxelType::Float) std::tie(lo, hi) = data_->minMax();
-        for (std::size_t i = 0; i < parts_.size(); ++i) {
-            writeBrickTexels(*data_, bricks[i], lo, hi, bytes + parts_[i].dataOffset);
-            if (tags_) writeBrickLabels(*tags_, bricks[i], bytes + parts_[i].tagOffset);
-        }
-    });
+    filled_ =
+        std::async(std::launch::async, [this, layout, bytes = static_cast<std::uint8_t*>(mapped)] {
+            // The grid's CPU passes too (the step change would do them on the GL thread).
+            measures_ = GridMeasures::of(*data_, tags_.get(), layout);
+            const double lo = measures_.finiteMin, hi = measures_.finiteMax;
+            const std::vector<Brick>& bricks = layout.bricks();
+            for (std::size_t i = 0; i < parts_.size(); ++i) {
+                writeBrickTexels(*data_, bricks[i], lo, hi, bytes + parts_[i].dataOffset);
+                if (tags_) writeBrickLabels(*tags_, bricks[i], bytes + parts_[i].tagOffset);
+            }
+        });
 }
 
 StagedGrid::~StagedGrid() {

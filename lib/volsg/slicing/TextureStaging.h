@@ -13,6 +13,7 @@
 #include <volsg/core/Object.h>
 #include <volsg/gl/Buffer.h>
 #include <volsg/slicing/BrickLayout.h>
+#include <volsg/slicing/GridMeasures.h>
 #include <volsg/volume/VolumeGrid.h>
 
 namespace volsg {
@@ -36,6 +37,10 @@ public:
     /// Waits for the texels and unmaps the buffer (GL thread): before any upload from it.
     /// Throws Error when the buffer was lost while mapped.
     void finish();
+
+    /// What the helper measured besides (finite range, brick ranges, empty cells); valid
+    /// after finish().
+    const GridMeasures& measures() const { return measures_; }
 
     const VolumeGrid* data() const { return data_.get(); }
     const VolumeGrid* tags() const { return tags_.get(); }
@@ -67,6 +72,7 @@ private:
     std::vector<Part> parts_;
     Buffer buffer_;
     bool mapped_ = false;
+    GridMeasures measures_;    // written by the helper thread, read after finish()
     std::future<void> filled_; // the helper thread's writing
 };
 

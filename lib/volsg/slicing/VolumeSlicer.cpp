@@ -28,6 +28,7 @@
 #include <volsg/slicing/CellRows.h>
 #include <volsg/slicing/DataFormat.h>
 #include <volsg/slicing/EmptyCells.h>
+#include <volsg/slicing/GridMeasures.h>
 #include <volsg/slicing/PreIntegrationTable.h>
 #include <volsg/slicing/ProxyPlaneCutter.h>
 #include <volsg/slicing/SliceShaders.h>
@@ -280,54 +281,27 @@ struct VolumeTextures {
 // ---------------------------------------------------------------------------------------------
 // Voxels of a brick
 
-template <class T>
-void dataRangeOf(const VolumeGrid& grid, const Brick& b, double lowest, double highest,
-                 BrickState& out) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    forEachBrickVoxel<T>(grid, b, [&](T x) {
-        const double d = replacedValue(x, lowest, highest);
-        lo = std::min(lo, d);
-        hi = std::max(hi, d);
-    });
-    out.dataMin = lo;
-    out.dataMax = hi;
+/// The staged grid's measures, when they are of this grid with its labels (a grid staged
+/// without them, for an untagged table, has no tag ranges a later tagged table would need).
+const GridMeasures* stagedMeasures(const VolumeTextures& v) {
+    return v.staged && v.staged->data() == v.data.get() && v.staged->tags() == v.tags.get()
+               ? &v.staged->measures()
+               : nullptr;
 }
 
-template <class T> void tagRangeOf(const VolumeGrid& grid, const Brick& b, BrickState& out) {
-    int lo = std::numeric_limits<int>::max(), hi = std::numeric_limits<int>::min();
-    forEachBrickVoxel<T>(grid, b, [&](T x) {
-        lo = std::min(lo, int(x));
-        hi = std::max(hi, int(x));
-    });
-    out.tagMin = lo;
-    out.tagMax = hi;
-}
-
+/// Brick ranges of the layout: from the staged grid's measures when they are of this layout.
 void measureBricks(VolumeTextures& v) {
-    const VolumeGrid& grid = *v.data;
+    std::vector<BrickRange> measured;
+    if (const GridMeasures* m = stagedMeasures(v); m && m->sameBricks(v.layout))
+        measured = m->ranges;
+    else
+        measured = measureBrickRanges(*v.data, v.tags.get(), v.layout, v.finiteMin, v.finiteMax);
     for (std::size_t i = 0; i < v.bricks.size(); ++i) {
-        const Brick& b = v.layout.bricks()[i];
         BrickState& s = v.bricks[i];
-        switch (grid.type()) {
-        case VoxelType::UByte:
-            dataRangeOf<std::uint8_t>(grid, b, v.finiteMin, v.finiteMax, s);
-            break;
-        case VoxelType::UShort:
-            dataRangeOf<std::uint16_t>(grid, b, v.finiteMin, v.finiteMax, s);
-            break;
-        case VoxelType::Short:
-            dataRangeOf<std::int16_t>(grid, b, v.finiteMin, v.finiteMax, s);
-            break;
-        case VoxelType::Float:
-            dataRangeOf<float>(grid, b, v.finiteMin, v.finiteMax, s);
-            break;
-        }
-        if (v.tags) {
-            if (v.tags->type() == VoxelType::UByte)
-                tagRangeOf<std::uint8_t>(*v.tags, b, s);
-            else
-                tagRangeOf<std::uint16_t>(*v.tags, b, s);
-        }
+        s.dataMin = measured[i].dataMin;
+        s.dataMax = measured[i].dataMax;
+        s.tagMin = measured[i].tagMin;
+        s.tagMax = measured[i].tagMax;
     }
 }
 
@@ -428,9 +402,12 @@ void prepareGrid(VolumeTextures& v, const RayCastVolume& volume) {
     v.data = volume.data;
     v.tags = volume.tags;
     v.format = dataFormatOf(v.data->type());
-    const auto [lo, hi] = v.data->minMax(); // finite values only
-    v.finiteMin = lo;
-    v.finiteMax = hi;
+    if (const GridMeasures* m = stagedMeasures(v)) { // measured ahead, with the texels
+        v.finiteMin = m->finiteMin;
+        v.finiteMax = m->finiteMax;
+    } else {
+        std::tie(v.finiteMin, v.finiteMax) = v.data->minMax(); // finite values only
+    }
     const auto [natLo, natHi] = v.data->naturalRange();
     v.naturalRange = {natLo, natHi};
 }
@@ -494,7 +471,12 @@ void prepareTable(VolumeTextures& v, const RayCastVolume& volume, std::uint64_t 
 /// The empty-cell flags for this table and kind (DVR: may emit; MIP: may be a shown maximum),
 /// measured on first use and uploaded when the table or the kind changes.
 void prepareCells(VolumeTextures& v, int kind) {
-    if (!v.cells.measured()) v.cells.measure(*v.data, v.tags.get(), v.finiteMin, v.finiteMax);
+    if (!v.cells.measured()) {
+        if (const GridMeasures* m = stagedMeasures(v); m && m->cells.measured())
+            v.cells = m->cells;
+        else
+            v.cells.measure(*v.data, v.tags.get(), v.finiteMin, v.finiteMax);
+    }
     if (v.cellKind == kind && v.cellTableKey == v.tableKey) return;
     const bool tagged = v.tags && v.table.rows() > 1;
     v.cells.classify(v.table, tagged, kind == 1);
@@ -608,9 +590,8 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())) ^
         (std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.tags.get())) << 1);
     VolumeTextures& v = action.cache<VolumeTextures>(owner, key);
-    prepareGrid(v, volume);
     TextureStaging& staging = action.cache<TextureStaging>(owner);
-    if (staging.next && staging.next->data() == volume.data.get() &&
+    if (!v.data && staging.next && staging.next->data() == volume.data.get() &&
         (!staging.next->tags() || staging.next->tags() == volume.tags.get()))
         v.staged = std::move(staging.next); // staged while the previous step was shown
     if (v.staged) {
@@ -620,6 +601,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
             v.staged.reset(); // the buffer was lost: upload directly
         }
     }
+    prepareGrid(v, volume);
 
     const bool lighting = settings.lighting && mode == kDvr;
     // Lighting, pre-integration and tag-cell splitting sample up to a voxel (or half a slab)
