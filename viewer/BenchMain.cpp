@@ -39,7 +39,8 @@ const char* usage =
     "       volsg-bench --suite parse|traversal|all [--nodes N] [--side S] [--frames N]\n"
     "                   [--keep DIR]\n"
     "       volsg-bench --suite series [--size WxH] [--frames STEPS] [--volume-side N]\n"
-    "                   [--budget MB]   (a 100-step series of 256^3 volumes by default)\n"
+    "                   [--budget MB] [--cases shearwarp,volume]   (a 100-step series of\n"
+    "                   256^3 volumes by default)\n"
     "       volsg-bench --suite compact [--frames REPEATS] [--keep DIR]   (.vsgv of the RTVR\n"
     "                   scenes: bytes per voxel, write and load ms)\n"
     "       volsg-bench --suite volumes [--size WxH] [--frames N] [--error-frames K]\n"
@@ -419,6 +420,17 @@ int run(int argc, char** argv) {
         if (st.framesGiven) ss.steps = st.frames;
         if (st.volumeSideGiven) ss.side = st.volumeSide;
         ss.budgetMegabytes = st.budgetMegabytes;
+        if (!st.cases.empty()) {
+            ss.shearWarp = ss.volume = false;
+            for (const std::string& c : st.cases) {
+                if (c == "shearwarp")
+                    ss.shearWarp = true;
+                else if (c == "volume")
+                    ss.volume = true;
+                else
+                    throw Error("unknown series case '" + c + "' (shearwarp, volume)");
+            }
+        }
         ss.backend = st.backend;
         return bench::runSeriesSuite(ss);
     }
