@@ -284,6 +284,37 @@ TEST_CASE("prefetch prepares the steps ahead in the direction of play") {
     CHECK(cache.stats().extractions == 9u);
 }
 
+TEST_CASE("a full memory tier makes room for the prefetch window: the next steps are ready") {
+    // Budget for about four steps: once the first pass filled it with steps behind the
+    // player, the steps ahead must still be prefetched (the steps behind go to disk), so that
+    // a second pass finds every next step in memory and never reads one itself.
+    constexpr int steps = 12;
+    const ExtractionSpec spec = visibleSpec();
+    std::size_t largest = 0;
+    for (int s = 0; s < steps; ++s)
+        largest = std::max(
+            largest,
+            VoxelObject::extract(*makeMovingSphere(kSide, double(s) / (steps - 1)), nullptr, spec)
+                ->memoryBytes());
+    SeriesCacheSettings settings;
+    settings.memoryBudget = 4 * largest;
+    settings.prefetchSteps = 2;
+    SeriesCache cache(steps, sphereLoader(steps), settings);
+    for (int pass = 0; pass < 2; ++pass)
+        for (int s = 0; s < steps; ++s) {
+            cache.show(s, +1);
+            cache.voxelObject(s, spec);
+            cache.waitUntilIdle();
+            INFO("pass " << pass << ", step " << s);
+            CHECK(cache.isInMemory((s + 1) % steps, spec));
+            CHECK(cache.isInMemory((s + 2) % steps, spec));
+        }
+    const SeriesCacheStats stats = cache.stats();
+    CHECK(stats.extractions == std::uint64_t(steps)); // the second pass read back, never extracted
+    CHECK(stats.diskReads >= std::uint64_t(steps - 4));
+    CHECK(stats.memoryHighWater <= settings.memoryBudget + 2 * largest);
+}
+
 TEST_CASE("a step that fails to load is reported and does not stop the others") {
     SeriesCache cache(4, [](int index) {
         if (index == 2) throw Error("step 2 is missing");
