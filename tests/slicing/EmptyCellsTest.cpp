@@ -99,41 +99,53 @@ TEST_CASE("cells record what trilinear samples in them can read") {
 }
 
 TEST_CASE("cell ranges equal a brute-force walk over each cell and its layer") {
-    // Dimensions that are no multiple of 8 (partial last cells) and non-finite voxels, which
-    // count as the finite extremes, as the textures hold them.
+    // Dimensions that are no multiple of 8 (partial last cells); float data with non-finite
+    // voxels, which count as the finite extremes as the textures hold them, and 16-bit data
+    // (compared in its own type).
     const glm::ivec3 d(21, 13, 10);
-    const ref_ptr<VolumeGrid> grid = VolumeGrid::create(d, VoxelType::Float);
-    std::uint32_t state = 12345u;
-    for (std::size_t i = 0; i < grid->voxelCount(); ++i) {
-        state = state * 1664525u + 1013904223u;
-        grid->setValue(i, double(state >> 8) / double(1u << 24) * 100.0 - 50.0);
+    for (const VoxelType type : {VoxelType::Float, VoxelType::UShort}) {
+        INFO((type == VoxelType::Float ? "float" : "ushort"));
+        const ref_ptr<VolumeGrid> grid = VolumeGrid::create(d, type);
+        std::uint32_t state = 12345u;
+        for (std::size_t i = 0; i < grid->voxelCount(); ++i) {
+            state = state * 1664525u + 1013904223u;
+            const double unit = double(state >> 8) / double(1u << 24);
+            grid->setValue(i, type == VoxelType::Float ? unit * 100.0 - 50.0
+                                                       : std::floor(unit * 65535.0));
+        }
+        const bool isFloat = type == VoxelType::Float;
+        if (isFloat) {
+            grid->setValue(grid->index(8, 7, 8), std::numeric_limits<double>::quiet_NaN());
+            grid->setValue(grid->index(20, 0, 0), std::numeric_limits<double>::infinity());
+        }
+        const double lowest = isFloat ? -60.0 : 0.0, highest = isFloat ? 60.0 : 65535.0;
+        EmptyCells cells;
+        cells.measure(*grid, nullptr, lowest, highest);
+        REQUIRE(cells.cells() == glm::ivec3(3, 2, 2));
+        std::size_t c = 0;
+        for (int cz = 0; cz < 2; ++cz)
+            for (int cy = 0; cy < 2; ++cy)
+                for (int cx = 0; cx < 3; ++cx, ++c) {
+                    double lo = 1e300, hi = -1e300;
+                    for (int z = std::max(8 * cz - 1, 0); z < std::min(8 * cz + 9, d.z); ++z)
+                        for (int y = std::max(8 * cy - 1, 0); y < std::min(8 * cy + 9, d.y); ++y)
+                            for (int x = std::max(8 * cx - 1, 0); x < std::min(8 * cx + 9, d.x);
+                                 ++x) {
+                                double v = grid->value(x, y, z);
+                                if (std::isnan(v)) v = lowest;
+                                if (std::isinf(v)) v = v > 0 ? highest : lowest;
+                                lo = std::min(lo, v);
+                                hi = std::max(hi, v);
+                            }
+                    INFO("cell " << cx << " " << cy << " " << cz);
+                    CHECK(cells.dataRange(c).x == lo);
+                    CHECK(cells.dataRange(c).y == hi);
+                }
+        if (isFloat) {
+            CHECK(cells.dataRange(1 + 3 * (0 + 2 * 1)).x == lowest); // the NaN at (8, 7, 8)
+            CHECK(cells.dataRange(2).y == highest);                  // the +Inf at (20, 0, 0)
+        }
     }
-    grid->setValue(grid->index(8, 7, 8), std::numeric_limits<double>::quiet_NaN());
-    grid->setValue(grid->index(20, 0, 0), std::numeric_limits<double>::infinity());
-    const double lowest = -60.0, highest = 60.0;
-    EmptyCells cells;
-    cells.measure(*grid, nullptr, lowest, highest);
-    REQUIRE(cells.cells() == glm::ivec3(3, 2, 2));
-    std::size_t c = 0;
-    for (int cz = 0; cz < 2; ++cz)
-        for (int cy = 0; cy < 2; ++cy)
-            for (int cx = 0; cx < 3; ++cx, ++c) {
-                double lo = 1e300, hi = -1e300;
-                for (int z = std::max(8 * cz - 1, 0); z < std::min(8 * cz + 9, d.z); ++z)
-                    for (int y = std::max(8 * cy - 1, 0); y < std::min(8 * cy + 9, d.y); ++y)
-                        for (int x = std::max(8 * cx - 1, 0); x < std::min(8 * cx + 9, d.x); ++x) {
-                            double v = grid->value(x, y, z);
-                            if (std::isnan(v)) v = lowest;
-                            if (std::isinf(v)) v = v > 0 ? highest : lowest;
-                            lo = std::min(lo, v);
-                            hi = std::max(hi, v);
-                        }
-                INFO("cell " << cx << " " << cy << " " << cz);
-                CHECK(cells.dataRange(c).x == lo);
-                CHECK(cells.dataRange(c).y == hi);
-            }
-    CHECK(cells.dataRange(1 + 3 * (0 + 2 * 1)).x == lowest); // the NaN at (8, 7, 8)
-    CHECK(cells.dataRange(2).y == highest);                  // the +Inf at (20, 0, 0)
 }
 
 TEST_CASE("skipping empty cells changes no image and matches the reference") {

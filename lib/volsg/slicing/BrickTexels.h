@@ -2,6 +2,7 @@
 // A brick's voxels as its 3D textures take them: one definition for the direct upload and the
 // staged (pixel unpack buffer) upload of the Volume slicer, so both send the same bytes.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -21,6 +22,29 @@ template <class T> double replacedValue(T x, double lowest, double highest) {
     (void)lowest;
     (void)highest;
     return double(x);
+}
+
+/// Widens [lo, hi] by the n voxels at `row`, non-finite ones replaced as replacedValue does.
+/// Integer voxels are compared in their own type (the loop vectorises), floats one by one.
+template <class T>
+void extendRange(const T* row, std::size_t n, double lowest, double highest, double& lo,
+                 double& hi) {
+    if (n == 0) return;
+    if constexpr (std::is_integral_v<T>) {
+        T a = row[0], b = row[0];
+        for (std::size_t i = 1; i < n; ++i) {
+            a = row[i] < a ? row[i] : a;
+            b = row[i] > b ? row[i] : b;
+        }
+        lo = std::min(lo, double(a));
+        hi = std::max(hi, double(b));
+    } else {
+        for (std::size_t i = 0; i < n; ++i) {
+            const double d = replacedValue(row[i], lowest, highest);
+            lo = std::min(lo, d);
+            hi = std::max(hi, d);
+        }
+    }
 }
 
 /// The grid index of the first voxel of the brick's texel row (j, k).

@@ -16,10 +16,10 @@ namespace {
 /// Per cell, the (min, max) over the voxels a trilinear sample in it reads: its own 8^3 and
 /// the layer of one voxel around it, i.e. voxels [8c - 1, 8c + 9) clamped, along every axis.
 /// A box range is separable: rows along x first (per row, per cell), then those along y, then
-/// along z, so each voxel is read once. `valueAt(index)` gives voxel `index` as a double.
-template <class V>
-void measureRanges(const glm::ivec3& d, const glm::ivec3& cells, V&& valueAt,
-                   std::vector<double>& minOut, std::vector<double>& maxOut) {
+/// along z, so each voxel is read once; non-finite voxels count as `lowest` / `highest`.
+template <class T>
+void measureRanges(const glm::ivec3& d, const glm::ivec3& cells, const T* voxels, double lowest,
+                   double highest, std::vector<double>& minOut, std::vector<double>& maxOut) {
     constexpr int n = EmptyCells::kCellSize;
     const auto lowOf = [](int c) { return std::max(c * n - 1, 0); };
     const auto highOf = [](int c, int size) { return std::min((c + 1) * n + 1, size); };
@@ -31,11 +31,8 @@ void measureRanges(const glm::ivec3& d, const glm::ivec3& cells, V&& valueAt,
             const std::size_t row = std::size_t(d.x) * (std::size_t(y) + std::size_t(d.y) * z);
             for (int c = 0; c < cells.x; ++c) {
                 double lo = inf, hi = -inf;
-                for (int x = lowOf(c); x < highOf(c, d.x); ++x) {
-                    const double v = valueAt(row + std::size_t(x));
-                    lo = std::min(lo, v);
-                    hi = std::max(hi, v);
-                }
+                extendRange(voxels + row + std::size_t(lowOf(c)),
+                            std::size_t(highOf(c, d.x) - lowOf(c)), lowest, highest, lo, hi);
                 const std::size_t o =
                     std::size_t(c) + std::size_t(cells.x) * (y + std::size_t(d.y) * z);
                 loX[o] = lo;
@@ -69,20 +66,15 @@ void measureRanges(const glm::ivec3& d, const glm::ivec3& cells, V&& valueAt,
 template <class T>
 void measureData(const VolumeGrid& grid, const glm::ivec3& cells, double lowest, double highest,
                  std::vector<double>& minOut, std::vector<double>& maxOut) {
-    const auto voxels = grid.data<T>();
-    measureRanges(
-        grid.dimensions(), cells,
-        [&](std::size_t i) { return replacedValue(voxels[i], lowest, highest); }, minOut, maxOut);
+    measureRanges(grid.dimensions(), cells, grid.data<T>().data(), lowest, highest, minOut, maxOut);
 }
 
 template <class T>
 void measureTags(const VolumeGrid& tags, const glm::ivec3& cells, std::vector<int>& minOut,
                  std::vector<int>& maxOut) {
-    const auto voxels = tags.data<T>();
     std::vector<double> lo(minOut.size(), std::numeric_limits<double>::infinity());
     std::vector<double> hi(maxOut.size(), -std::numeric_limits<double>::infinity());
-    measureRanges(
-        tags.dimensions(), cells, [&](std::size_t i) { return double(voxels[i]); }, lo, hi);
+    measureRanges(tags.dimensions(), cells, tags.data<T>().data(), 0.0, 0.0, lo, hi);
     for (std::size_t i = 0; i < lo.size(); ++i) {
         minOut[i] = int(lo[i]);
         maxOut[i] = int(hi[i]);

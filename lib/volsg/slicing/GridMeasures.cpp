@@ -16,11 +16,11 @@ template <class T>
 void dataRangeOf(const VolumeGrid& grid, const Brick& b, double lowest, double highest,
                  BrickRange& out) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    forEachBrickVoxel<T>(grid, b, [&](T x) {
-        const double d = replacedValue(x, lowest, highest);
-        lo = std::min(lo, d);
-        hi = std::max(hi, d);
-    });
+    const auto voxels = grid.data<T>();
+    for (int k = 0; k < b.voxelCount.z; ++k)
+        for (int j = 0; j < b.voxelCount.y; ++j)
+            extendRange(voxels.data() + brickRowStart(grid, b, j, k), std::size_t(b.voxelCount.x),
+                        lowest, highest, lo, hi);
     out.dataMin = lo;
     out.dataMax = hi;
 }

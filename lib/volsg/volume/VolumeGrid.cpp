@@ -165,6 +165,16 @@ void VolumeGrid::throwTypeMismatch() const {
 std::pair<double, double> VolumeGrid::minMax() const {
     return std::visit(
         [](const auto& data) {
+            using T = std::decay_t<decltype(data[0])>;
+            if constexpr (std::is_integral_v<T>) { // all finite: compared in their own type
+                if (data.empty()) return std::pair(0.0, 0.0);
+                T a = data[0], b = data[0];
+                for (const T x : data) {
+                    a = x < a ? x : a;
+                    b = x > b ? x : b;
+                }
+                return std::pair(double(a), double(b));
+            }
             double lo = std::numeric_limits<double>::infinity();
             double hi = -lo;
             for (const auto x : data) {
