@@ -289,12 +289,21 @@ TEST_CASE("a staged texture upload renders the same image as a direct one, bit f
             CHECK(stats.brickUploads >= 1u);
             if (*limit) CHECK(stats.bricksTotal > 1);
             CHECK(stats.stagedUploads == stats.brickUploads); // every upload came from the buffer
+            // ... into the last step's textures (same layout): whole, none was allocated
+            // anew; bricked, as many as the last step had non-empty bricks of each size.
+            if (*limit) {
+                CHECK(stats.refilledTextures > 0u);
+                CHECK(stats.refilledTextures <= stats.brickUploads);
+            } else {
+                CHECK(stats.refilledTextures == stats.brickUploads);
+            }
 
             // The same step in a fresh renderer: its first frame uploads directly.
             Renderer freshRenderer;
             const ref_ptr<Node> freshRoot = readSceneFromString(textureSeriesScene(step));
             const Image direct = freshRenderer.render(*freshRoot, smallOptions());
             CHECK(findNode<Volume>(*freshRoot)->slicingStats().stagedUploads == 0u);
+            CHECK(findNode<Volume>(*freshRoot)->slicingStats().refilledTextures == 0u);
             CHECK(findNode<Volume>(*freshRoot)->slicingStats().brickUploads == stats.brickUploads);
             CHECK(centroidX(staged) > 0.0);              // the sphere is in the image
             CHECK(maxDifference(staged, direct) == 0.0); // bit for bit

@@ -134,4 +134,10 @@ void EmptyCells::classify(const TransferTable& table, bool tagged, bool maximum)
     emptyFraction_ = flags_.empty() ? 0.0 : double(empty) / double(flags_.size());
 }
 
+std::pair<double, double> EmptyCells::overallRange() const {
+    if (dataMin_.empty()) return {0.0, 0.0};
+    return {*std::min_element(dataMin_.begin(), dataMin_.end()),
+            *std::max_element(dataMax_.begin(), dataMax_.end())};
+}
+
 } // namespace volsg

@@ -8,6 +8,7 @@
 // integer texture and one nearest fetch per sample.
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -37,6 +38,8 @@ public:
     glm::ivec3 cells() const { return cells_; }
     /// Cell i's (min, max) data as measured (x fastest).
     glm::dvec2 dataRange(std::size_t cell) const { return {dataMin_[cell], dataMax_[cell]}; }
+    /// The smallest and largest of all cells (0, 0 for an empty grid): the grid's range.
+    std::pair<double, double> overallRange() const;
     /// The share of cells that cannot emit under the last classify().
     double emptyFraction() const { return emptyFraction_; }
 

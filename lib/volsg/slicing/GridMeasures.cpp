@@ -70,10 +70,21 @@ std::vector<BrickRange> measureBrickRanges(const VolumeGrid& data, const VolumeG
 GridMeasures GridMeasures::of(const VolumeGrid& data, const VolumeGrid* tags,
                               const BrickLayout& layout) {
     GridMeasures m;
-    std::tie(m.finiteMin, m.finiteMax) = data.minMax(); // finite values only
     m.bricks = layout.bricks();
-    m.ranges = measureBrickRanges(data, tags, layout, m.finiteMin, m.finiteMax);
-    m.cells.measure(data, tags, m.finiteMin, m.finiteMax);
+    if (data.type() != VoxelType::Float) {
+        // Integer voxels are all finite: the cells' ranges give the grid's in the same pass.
+        m.cells.measure(data, tags, 0.0, 0.0);
+        std::tie(m.finiteMin, m.finiteMax) = m.cells.overallRange();
+    } else {
+        std::tie(m.finiteMin, m.finiteMax) = data.minMax(); // finite values only
+        m.cells.measure(data, tags, m.finiteMin, m.finiteMax);
+    }
+    const bool wholeGrid = m.bricks.size() == 1 && m.bricks[0].firstVoxel == glm::ivec3(0) &&
+                           m.bricks[0].voxelCount == data.dimensions();
+    if (wholeGrid && !tags) // non-finite voxels count as the finite extremes: the grid's range
+        m.ranges = {BrickRange{m.finiteMin, m.finiteMax, 0, 0}};
+    else
+        m.ranges = measureBrickRanges(data, tags, layout, m.finiteMin, m.finiteMax);
     return m;
 }
 

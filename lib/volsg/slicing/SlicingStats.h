@@ -46,6 +46,9 @@ struct SlicingStats {
     /// Of brickUploads, those read from a buffer staged before the grid was shown
     /// (VolumeSlicer::stage: a VolumeSeries' next step).
     std::uint64_t stagedUploads = 0;
+    /// Of brickUploads, those written into the previous grid's texture of the same size (a
+    /// series' step change) instead of a new one.
+    std::uint64_t refilledTextures = 0;
     std::uint64_t transferTableBuilds = 0;  ///< transfer tables (and tag maps) baked and uploaded
     std::uint64_t preIntegrationBuilds = 0; ///< pre-integration tables baked and uploaded
 };

@@ -85,6 +85,7 @@ struct TextureStaging {
     int guard = 0;                   ///< the last frame's guard voxels
     bool tagged = false;             ///< the last frame drew label textures
     std::uint64_t stagedGrids = 0;   ///< grids staged so far
+    std::uint64_t lastKey = 0;       ///< the grid the last frame drew (its textures' cache key)
 };
 
 } // namespace volsg
