@@ -122,7 +122,7 @@ void runVariant(const SeriesSuiteSettings& st, const RenderOptions& options, dou
     if (!series) throw Error("series suite scene has no SERIES node");
     series->cache().setSpillRenderLists(improved || node != SeriesNode::ShearWarp);
     const auto* volume = static_cast<const Volume*>(findByName(*root, "VOLUME"));
-    std::uint64_t uploads = 0, staged = 0;
+    std::uint64_t uploads = 0, staged = 0, refilled = 0;
     Renderer renderer;
     auto frame = [&](Phase& phase) {
         const double cpu0 = threadCpuMs();
@@ -132,6 +132,7 @@ void runVariant(const SeriesSuiteSettings& st, const RenderOptions& options, dou
             // A new step starts a new texture cache: its counters are that step's.
             uploads += volume->slicingStats().brickUploads;
             staged += volume->slicingStats().stagedUploads;
+            refilled += volume->slicingStats().refilledTextures;
         }
     };
     auto timed = [&](Phase& phase, auto&& body) {
@@ -168,7 +169,7 @@ void runVariant(const SeriesSuiteSettings& st, const RenderOptions& options, dou
     series->step = 0;
     renderer.render(*root, options);
     series->cache().waitUntilIdle();
-    uploads = staged = 0;
+    uploads = staged = refilled = 0;
     const char* names[3] = {"play, first pass", "play, second pass (cached steps)",
                             "play, third pass, no period (cached)"};
     Phase passes[3];
@@ -231,8 +232,9 @@ void runVariant(const SeriesSuiteSettings& st, const RenderOptions& options, dou
                     (unsigned long long)(sortsAfter[2] - sortsBefore[2]));
     if (volume)
         std::printf("texture uploads in the passes: %llu bricks, %llu of them from staged "
-                    "buffers\n",
-                    (unsigned long long)uploads, (unsigned long long)staged);
+                    "buffers, %llu into the last step's textures\n",
+                    (unsigned long long)uploads, (unsigned long long)staged,
+                    (unsigned long long)refilled);
     std::printf("memory: voxel lists high-water %.1f MB (budget %.1f MB, now %.1f MB), grids "
                 "high-water %.1f MB, disk %.1f MB, process peak RSS %.0f MB\n",
                 double(s.memoryHighWater) / 1048576.0, budget, double(s.memoryBytes) / 1048576.0,
