@@ -222,7 +222,6 @@ vec2 gRange; // untagged: the one row's dataRange, set once per fragment
 // MIP / MINIP: keeps the extreme v of the samples it is given, with the row and BoxClip region
 // of that sample; samples in a removed BoxClip region do not count.
 void considerExtreme(vec3 x, inout float best, inout int bestInfo) {
-    if (MODE == 1 && uSkipCells && !cellMayEmit(x)) return; // below every value shown
     int rowHere = rowAt(x);
     int regionHere = 0;
     if (uHasBoxClip) {
@@ -250,9 +249,15 @@ void main() {
         // brick and plane. (A point exactly on a seam would count for both bricks: a set of
         // measure zero.)
         if (any(lessThan(vLocal, uOwnMin)) || any(greaterThan(vLocal, uOwnMax))) discard;
+        // One sample per plane, at this point: in an empty cell the fragment adds nothing
+        // (DVR: no optical depth; MIP: below every value shown). Several samples are not
+        // tested one by one: the geometry already leaves out the rows of empty cells, and on
+        // llvmpipe a per-sample test costs more than the masked-off samples it saves (chest
+        // CT, 8 samples a plane: DVR 188 -> 162 ms, MIP 16 samples 283 -> 219 ms, same image).
 #if MODE == 0
-        // One sample per plane, at this point: in an empty cell the fragment adds nothing.
         if (uSkipCells && uSlabSamples <= 1 && !cellMayEmit(vLocal)) discard;
+#elif MODE == 1
+        if (uSkipCells && uSlabSamples <= 1 && !uMipPeaks && !cellMayEmit(vLocal)) discard;
 #endif
     }
     // The pixel's ray through this point: its direction, the path length between this plane
@@ -382,7 +387,6 @@ void main() {
         } else
 #endif
         {
-            if (uSkipCells && !cellMayEmit(x)) continue; // no optical depth here
             vec4 rgba = classify(normalised(dataAt(tc), rangeX), rowX);
             C = rgba.rgb;
             tauL0 = rgba.a;
