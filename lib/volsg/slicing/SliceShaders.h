@@ -344,6 +344,27 @@ void main() {
     float partLength = thickness / float(parts);
     vec3 emitted = vec3(0.0);
     float depthSum = 0.0; // optical depth in front of the current part, within the slab
+#if !defined(TAGGED) && !defined(PREINTEGRATED) && !defined(LIGHTING)
+    if (!uHasBoxClip && !uHasPlaneOpacity && parts > 1) {
+        // The same parts, lean: without tags, BoxClip or planeOpacity every part has row 0,
+        // its whole length and the transfer function's own colour, and the texture coordinate
+        // is linear along the ray (llvmpipe runs this loop for every pixel of a SIMD block,
+        // so what it leaves out of each sample is what the frame saves).
+        vec3 tc = texCoord(vLocal + dir * (-front + 0.5 * partLength));
+        vec3 step = dir * (partLength * uInvSpacing / uTexSize);
+        float lengthL0 = partLength * uInvL0;
+        float transmitted = 1.0; // e^-depthSum
+        for (int j = 0; j < parts; ++j) {
+            vec4 rgba = classify(normalised(dataAt(tc + float(j) * step), range), 0);
+            float D = rgba.a * lengthL0;
+            float e = exp(-D);
+            emitted += transmitted * (D < 0.01 ? opacityOf(D) : 1.0 - e) * rgba.rgb;
+            transmitted *= e;
+            depthSum += D;
+        }
+        parts = 0; // done: the general loop below runs no part
+    }
+#endif
     for (int j = 0; j < parts; ++j) {
         float a = parts == 1 ? -front : -front + float(j) * partLength;
         float b = parts == 1 ? back : a + partLength;
@@ -423,6 +444,25 @@ void main() {
     vec3 u0 = voxelCoord(vLocal);
     vec3 du = dir * uInvSpacing;
     int parts = uFacePass ? 1 : max(uSlabSamples, 1);
+#ifndef TAGGED
+    if (!uMipPeaks && !uHasBoxClip && !uFacePass && parts > 1) {
+        // The same samples, lean: untagged and without a BoxClip every sample counts with row
+        // 0 and region 0, and v is a monotone function of the texel (rising, or falling for a
+        // reversed dataRange; float rounding keeps the order), so the extreme texel gives the
+        // extreme v. The texture coordinate is linear along the ray (stepped: sample positions
+        // equal the general loop's up to float rounding).
+        float partLength = thickness / float(parts);
+        vec3 tc = texCoord(vLocal + dir * (-front + 0.5 * partLength));
+        vec3 step = dir * (partLength * uInvSpacing / uTexSize);
+        bool larger = (MODE == 1) == (range.y >= range.x);
+        float extreme = texture(uData, tc).r;
+        for (int j = 1; j < parts; ++j) {
+            float texel = texture(uData, tc + float(j) * step).r;
+            extreme = larger ? max(extreme, texel) : min(extreme, texel);
+        }
+        best = normalised(extreme * uDataScale + uDataOffset, range);
+    } else
+#endif
     if (!uMipPeaks) {
         // Evenly spaced samples only (the plane point, or each part's middle), like a ray
         // caster stepping at that spacing: a quarter of the fetches, thin peaks can be missed.
