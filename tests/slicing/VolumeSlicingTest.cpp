@@ -238,6 +238,14 @@ TEST_CASE("the viewer's interactive plane scale lowers the interactive plane cou
     renderer.render(*root, options);
     CHECK(node->stats.planes == 40);
     CHECK(still > 40); // the still frame ignores the scale
+    // However slow the frames, the scale leaves at least 8 planes (no seams of 2-3 slabs) ...
+    options.interactivePlaneScale = 1.0 / 64.0;
+    renderer.render(*root, options);
+    CHECK(node->stats.planes == 8);
+    // ... unless fewer were asked for.
+    node->settings.interactivePlanes = 5;
+    renderer.render(*root, options);
+    CHECK(node->stats.planes == 5);
 }
 
 TEST_CASE("16-bit data over its full range matches the reference") {

@@ -44,6 +44,8 @@ constexpr int kMaxClipPlanes = 32;
 constexpr int kMaxLights = 8;
 constexpr int kPlaneOpacitySize = 1024;
 constexpr int kMaxPlanes = 100000;
+/// The fewest planes the viewer's interactive plane scale may leave (unless fewer were asked).
+constexpr long kMinScaledPlanes = 8;
 /// Inventor's default environment: white ambient light of intensity 0.2 (as shapes use).
 constexpr float kAmbientIntensity = 0.2f;
 
@@ -692,8 +694,10 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     if (action.isInteractive()) {
         planes = settings.interactivePlanes > 0 ? long(settings.interactivePlanes)
                                                 : std::max(1L, (still + 3) / 4);
-        // The viewer lowers this further when interactive frames are too slow.
-        planes = long(std::ceil(double(planes) * action.interactivePlaneScale()));
+        // The viewer lowers this further when interactive frames are too slow, but not below
+        // kMinScaledPlanes: with two or three planes the slab boundaries show as seams.
+        planes = std::max(long(std::ceil(double(planes) * action.interactivePlaneScale())),
+                          std::min(planes, kMinScaledPlanes));
     }
     planes = std::clamp(planes, 1L, long(kMaxPlanes));
     const PlaneLayout layout =
