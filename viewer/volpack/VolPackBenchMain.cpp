@@ -251,33 +251,33 @@ void runCase(const Case& c, const Settings& st) {
                 c.name.c_str(), d.x, d.y, d.z, renderer->classifiedVoxels(),
                 100.0 * double(renderer->classifiedVoxels()) / double(volume.data->voxelCount()),
                 renderer->colorChannels() == 1 ? "grey" : "RGB", st.size, st.size);
-    std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame  (classification %.0f "
-                "ms, max ray opacity %g)\n",
-                c.description.c_str(), samples.ms.size(), samples.median(), samples.min(),
-                classifyMs, st.maxRayOpacity);
-    std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame of VolPack's thread CPU "
-                "time (its frame time on an idle core)\n",
-                "", cpuSamples.ms.size(), cpuSamples.median(), cpuSamples.min());
+    // One row: label, frame count, median and min, then what the row measures.
+    const auto row = [](const char* label, const bench::Samples& s, const std::string& what) {
+        std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame%s\n", label,
+                    s.ms.size(), s.median(), s.min(), what.c_str());
+    };
+    const auto format = [](const char* pattern, double a, double b = 0.0) {
+        char text[160];
+        std::snprintf(text, sizeof text, pattern, a, b);
+        return std::string(text);
+    };
+    row(c.description.c_str(), samples,
+        format("  (classification %.0f ms, max ray opacity %g)", classifyMs, st.maxRayOpacity));
+    row("", cpuSamples, " of VolPack's thread CPU time (its frame time on an idle core)");
 
     if (swRoot) {
         const auto ratio = [](double volpack, double ours) {
             return volpack / std::max(ours, 1e-9);
         };
-        std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame  (VolPack / "
-                    "ShearWarpVolume: %.2f)\n",
-                    "ShearWarpVolume, same views", swSamples.ms.size(), swSamples.median(),
-                    swSamples.min(), ratio(samples.median(), swSamples.median()));
-        std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame of process CPU time "
-                    "(every thread)\n",
-                    "", swCpuSamples.ms.size(), swCpuSamples.median(), swCpuSamples.min());
-        std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame  (VolPack / engine: "
-                    "%.2f)\n",
-                    "  engine alone (wall)", engineSamples.ms.size(), engineSamples.median(),
-                    engineSamples.min(), ratio(samples.median(), engineSamples.median()));
-        std::printf("  %-28s %4zu frames  median %8.3f  min %8.3f  ms/frame of CPU time summed "
-                    "over its threads (VolPack CPU / engine CPU: %.2f)\n",
-                    "  engine alone (CPU)", engineCpuSamples.ms.size(), engineCpuSamples.median(),
-                    engineCpuSamples.min(), ratio(cpuSamples.median(), engineCpuSamples.median()));
+        row("ShearWarpVolume, same views", swSamples,
+            format("  (VolPack / ShearWarpVolume: %.2f)",
+                   ratio(samples.median(), swSamples.median())));
+        row("", swCpuSamples, " of process CPU time (every thread)");
+        row("  engine alone (wall)", engineSamples,
+            format("  (VolPack / engine: %.2f)", ratio(samples.median(), engineSamples.median())));
+        row("  engine alone (CPU)", engineCpuSamples,
+            format(" of CPU time summed over its threads (VolPack CPU / engine CPU: %.2f)",
+                   ratio(cpuSamples.median(), engineCpuSamples.median())));
     }
     const std::string stem = "volpack-" + c.name + "-frame" + std::to_string(keepFrame);
     writePfm((st.out / (stem + ".pfm")).string(), kept);
