@@ -40,9 +40,13 @@ template <class T> void tagRangeOf(const VolumeGrid& grid, const Brick& b, Brick
 std::vector<BrickRange> measureBrickRanges(const VolumeGrid& data, const VolumeGrid* tags,
                                            const BrickLayout& layout, double lowest,
                                            double highest) {
-    std::vector<BrickRange> out(layout.bricks().size());
+    const std::vector<Brick>& bricks = layout.bricks();
+    if (!tags && bricks.size() == 1 && bricks[0].firstVoxel == glm::ivec3(0) &&
+        bricks[0].voxelCount == data.dimensions())
+        return {BrickRange{lowest, highest, 0, 0}}; // non-finite voxels count as the extremes
+    std::vector<BrickRange> out(bricks.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
-        const Brick& b = layout.bricks()[i];
+        const Brick& b = bricks[i];
         switch (data.type()) {
         case VoxelType::UByte:
             dataRangeOf<std::uint8_t>(data, b, lowest, highest, out[i]);
@@ -79,12 +83,7 @@ GridMeasures GridMeasures::of(const VolumeGrid& data, const VolumeGrid* tags,
         std::tie(m.finiteMin, m.finiteMax) = data.minMax(); // finite values only
         m.cells.measure(data, tags, m.finiteMin, m.finiteMax);
     }
-    const bool wholeGrid = m.bricks.size() == 1 && m.bricks[0].firstVoxel == glm::ivec3(0) &&
-                           m.bricks[0].voxelCount == data.dimensions();
-    if (wholeGrid && !tags) // non-finite voxels count as the finite extremes: the grid's range
-        m.ranges = {BrickRange{m.finiteMin, m.finiteMax, 0, 0}};
-    else
-        m.ranges = measureBrickRanges(data, tags, layout, m.finiteMin, m.finiteMax);
+    m.ranges = measureBrickRanges(data, tags, layout, m.finiteMin, m.finiteMax);
     return m;
 }
 

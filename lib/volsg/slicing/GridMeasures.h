@@ -20,7 +20,8 @@ struct BrickRange {
     int tagMin = 0, tagMax = 0;
 };
 
-/// The ranges of every brick of `layout`; `lowest`, `highest`: the finite range.
+/// The ranges of every brick of `layout`; `lowest`, `highest`: the grid's finite range (so a
+/// single brick holding the whole grid without labels has it without a pass over the voxels).
 std::vector<BrickRange> measureBrickRanges(const VolumeGrid& data, const VolumeGrid* tags,
                                            const BrickLayout& layout, double lowest,
                                            double highest);
