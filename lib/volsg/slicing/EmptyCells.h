@@ -1,11 +1,12 @@
 #pragma once
 // Empty-space skipping inside a brick: the volume in cells of kCellSize^3 voxels, each with the
 // range of the data (and tags) that a trilinear sample inside it can read, and per transfer
-// table one flag per cell: may it emit? Slice fragments skip the samples that fall in cells
-// that cannot (DVR: their optical depth is zero; MIP: their value is below every value the
-// table shows), and discard themselves when every sample was skipped. So a volume that fits one
-// texture skips its air as a bricked one skips its empty bricks, at the cost of one small
-// integer texture and one nearest fetch per sample.
+// table one flag per cell: may it emit? (DVR: their optical depth is zero; MIP: their value is
+// below every value the table shows.) The slicer leaves rows of cells that cannot out of its
+// geometry (CellRows), and a fragment that takes one sample discards itself in such a cell. So a
+// volume that fits one texture skips its air as a bricked one skips its empty bricks, at the
+// cost of one small integer texture. (Fragments with several samples do not test each one: on
+// llvmpipe that cost more than the masked samples saved; lib/volsg/slicing/README.md.)
 
 #include <cstdint>
 #include <utility>

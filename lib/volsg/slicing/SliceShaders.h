@@ -94,7 +94,7 @@ uniform uint uInfoMask;      // MIP/MINIP: low key bits that carry row * 2 + reg
 uniform bool uFacePass;      // drawing the volume box's front faces, for slivers (see main)
 uniform int uSlabSamples;    // DVR: samples per slab, composited inside the fragment
 uniform bool uMipPeaks;      // MIP/MINIP: also sample every voxel-centre crossing in the slab
-uniform bool uSkipCells;     // skip samples in cells that cannot emit (EmptyCells)
+uniform bool uSkipCells;     // one-sample fragments in cells that cannot emit are discarded
 uniform float uCellScale;    // 1 / voxels per cell
 uniform float uLayoutNear;   // eye depth of the plane layout's start: plane k at
                              // uLayoutNear + (k + 0.5) * uPlaneSpacing

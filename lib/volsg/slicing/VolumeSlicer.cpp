@@ -651,9 +651,10 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     staging.tagged = tagged;
     const bool preIntegrated = settings.preIntegrated && mode == kDvr && !tagged;
     if (preIntegrated) preparePreIntegration(v);
-    // Empty cells are skipped per sample where that is exact: DVR samples each part at one
-    // point (not pre-integrated, not split at tag cells); MIP of one row (tags would let a
-    // skipped sample's row matter). MINIP and AVERAGE see every sample.
+    // Empty cells are skipped (rows left out of the geometry, one-sample fragments discarded)
+    // where that is exact: DVR samples each part at one point (not pre-integrated, not split at
+    // tag cells); MIP of one row (tags would let a skipped sample's row matter). MINIP and
+    // AVERAGE see every sample.
     // VOLSG_NO_EMPTY_CELLS=1 turns skipping off, for before/after figures of volsg-bench.
     static const bool noEmptyCells = std::getenv("VOLSG_NO_EMPTY_CELLS") != nullptr;
     const bool skipCells =

@@ -26,8 +26,8 @@ struct SlicingSettings {
     /// MIP, MINIP: also sample every voxel-centre crossing (finds thin peaks); false: only the
     /// samplesPerPlane evenly spaced samples (cheaper, a ray caster's error at that step).
     bool mipPeaks = true;
-    /// DVR and MIP: skip samples in cells of 8^3 voxels that cannot emit under the transfer
-    /// function (EmptyCells). False only to measure what it saves.
+    /// DVR and MIP: skip the cells of 8^3 voxels that cannot emit under the transfer function
+    /// (EmptyCells, CellRows). False only to measure what it saves.
     bool skipEmptyCells = true;
     bool nearest = false; ///< nearest-neighbour data instead of trilinear
     bool preIntegrated = false;
