@@ -333,7 +333,7 @@ int run(int argc, char** argv) {
         else if (a == "--planes-only")
             st.planesOnly = true;
         else if (a == "--samples-per-plane")
-            st.samplesPerPlane = args.intValue(a, 1, 64);
+            st.samplesPerPlane = args.intValue(a, 1, 256);
         else if (a == "--no-mip-peaks")
             st.mipPeaks = false;
         else if (a == "--scenes")

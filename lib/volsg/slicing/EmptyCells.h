@@ -6,7 +6,8 @@
 // geometry (CellRows), and a fragment that takes one sample discards itself in such a cell. So a
 // volume that fits one texture skips its air as a bricked one skips its empty bricks, at the
 // cost of one small integer texture. (Fragments with several samples do not test each one: on
-// llvmpipe that cost more than the masked samples saved; lib/volsg/slicing/README.md.)
+// llvmpipe that cost more than the masked samples saved; the lean slab loop only steps over
+// the empty cells at a slab's two ends, a cell per fetch; lib/volsg/slicing/README.md.)
 
 #include <cstdint>
 #include <utility>

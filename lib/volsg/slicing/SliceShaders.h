@@ -92,9 +92,10 @@ uniform vec3 uRegionColor[2];
 uniform vec2 uRegionWeight;
 uniform uint uInfoMask;      // MIP/MINIP: low key bits that carry row * 2 + region
 uniform bool uFacePass;      // drawing the volume box's front faces, for slivers (see main)
-uniform int uSlabSamples;    // DVR: samples per slab, composited inside the fragment
+uniform int uSlabSamples;    // samples per plane's slab, taken inside the fragment
+uniform bool uRefinePeaks;   // MIP/MINIP: the extreme from the parabola through the top sample
 uniform bool uMipPeaks;      // MIP/MINIP: also sample every voxel-centre crossing in the slab
-uniform bool uSkipCells;     // one-sample fragments in cells that cannot emit are discarded
+uniform bool uSkipCells;     // skip cells that cannot emit (one-sample discard, lean trims)
 uniform float uCellScale;    // 1 / voxels per cell
 uniform float uLayoutNear;   // eye depth of the plane layout's start: plane k at
                              // uLayoutNear + (k + 0.5) * uPlaneSpacing
@@ -121,6 +122,31 @@ bool cellMayEmit(vec3 local) {
     ivec3 cell = ivec3(floor(voxelCoord(local) * uCellScale));
     cell = clamp(cell, ivec3(0), textureSize(uCells, 0) - 1);
     return texelFetch(uCells, cell, 0).r != 0u;
+}
+
+// One end of a row of `count` evenly spaced samples (voxel coordinates u0 + j du) moved
+// inwards past the samples that lie in cells which cannot emit, a whole cell per step; from
+// the front (`fromBack` false: the first sample that may emit, or count) or from the back (the
+// last, or -1). Samples in such cells add nothing, so a slab's leading and trailing air costs
+// one integer fetch per cell instead of a filtered fetch per sample.
+int emittingEnd(vec3 u0, vec3 du, int count, bool fromBack) {
+    vec3 along = fromBack ? -du : du;
+    vec3 inv = 1.0 / mix(along, vec3(1e-30), equal(along, vec3(0.0)));
+    ivec3 lastCell = textureSize(uCells, 0) - 1;
+    float cellSize = 1.0 / uCellScale;
+    int j = fromBack ? count - 1 : 0;
+    for (int guard = 0; guard < 256 && j >= 0 && j < count; ++guard) {
+        vec3 u = u0 + float(j) * du;
+        ivec3 cell = clamp(ivec3(floor(u * uCellScale)), ivec3(0), lastCell);
+        if (texelFetch(uCells, cell, 0).r != 0u) break;
+        // Samples to the face the row leaves the cell by (a little short of it, so rounding
+        // never steps over a sample in the next cell).
+        vec3 face = (vec3(cell) + step(0.0, along)) * cellSize;
+        vec3 t = (face - u) * inv;
+        int n = max(1, int(ceil(min(min(t.x, t.y), t.z) - 1e-2)));
+        j += fromBack ? -n : n;
+    }
+    return j;
 }
 
 int rowAt(vec3 local) {
@@ -219,25 +245,128 @@ vec3 shade(vec3 C, vec3 tc, vec2 range, vec3 local) {
 
 #if MODE == 1 || MODE == 2
 vec2 gRange; // untagged: the one row's dataRange, set once per fragment
-// MIP / MINIP: keeps the extreme v of the samples it is given, with the row and BoxClip region
-// of that sample; samples in a removed BoxClip region do not count.
-void considerExtreme(vec3 x, inout float best, inout int bestInfo) {
+// MIP / MINIP: the v of a sample and its row * 2 + region, or -1 when its region is removed.
+float valueAt(vec3 x, out int info) {
     int rowHere = rowAt(x);
     int regionHere = 0;
     if (uHasBoxClip) {
         vec3 q = (uLocalToBox * vec4(x, 1.0)).xyz;
         regionHere = all(greaterThanEqual(q, uBoxMin)) && all(lessThanEqual(q, uBoxMax)) ? 1 : 0;
     }
-    if ((regionHere == 1 ? uRegionOpacity.y : uRegionOpacity.x) <= 0.0) return;
+    info = rowHere * 2 + regionHere;
+    if ((regionHere == 1 ? uRegionOpacity.y : uRegionOpacity.x) <= 0.0) return -1.0;
 #ifdef TAGGED
-    float v = normalised(dataAt(texCoord(x)), rangeOf(rowHere));
+    return normalised(dataAt(texCoord(x)), rangeOf(rowHere));
 #else
-    float v = normalised(dataAt(texCoord(x)), gRange); // one row: its range, fetched once
+    return normalised(dataAt(texCoord(x)), gRange); // one row: its range, fetched once
 #endif
-    if (MODE == 1 ? v > best : v < best) {
+}
+
+// Keeps the extreme v of the samples it is given, with the row and BoxClip region of that
+// sample; samples in a removed BoxClip region do not count.
+void considerExtreme(vec3 x, inout float best, inout int bestInfo) {
+    int info;
+    float v = valueAt(x, info);
+    if (v >= 0.0 && (MODE == 1 ? v > best : v < best)) {
         best = v;
-        bestInfo = rowHere * 2 + regionHere;
+        bestInfo = info;
     }
+}
+
+// Evenly spaced samples miss the part of a peak that lies between them (MIP always comes out
+// low). Where the most extreme sample m has both neighbours (l, r), the extreme is taken from
+// the parabola through the three: m + (p - q)^2 / (8 (p + q)), p = m - l, q = m - r. Exact for
+// a smooth peak; never above a tent-shaped one (a trilinear kink); 0 when p = q. The samples
+// next to a slab's ends, of the neighbouring slabs, serve as neighbours only (each slab finds
+// its own top), so a peak at a slab boundary is refined too. Values are oriented so that
+// larger is more extreme (MINIP passes -v); -1e30 is no sample.
+struct PeakTracker {
+    float top, left, right, prev;
+    bool wantRight;
+};
+PeakTracker noPeak() { return PeakTracker(-1e30, -1e30, -1e30, -1e30, false); }
+void track(inout PeakTracker k, float s) {
+    if (k.wantRight) k.right = s;
+    k.wantRight = s > k.top;
+    if (k.wantRight) {
+        k.left = k.prev;
+        k.top = s;
+        k.right = -1e30;
+    }
+    k.prev = s;
+}
+// Sample j of a slab of `parts`, where j = -1 and j = parts are the neighbouring slabs' nearest.
+void trackSample(inout PeakTracker k, float s, int j, int parts) {
+    if (j < 0) {
+        k.prev = s;
+    } else if (j >= parts) {
+        if (k.wantRight) k.right = s;
+    } else {
+        track(k, s);
+    }
+}
+float refinedTop(PeakTracker k) {
+    // Not a peak of this slab when a neighbouring slab's sample is larger (it refines it).
+    if (!uRefinePeaks || !(k.left > -1e29 && k.right > -1e29) || k.left > k.top ||
+        k.right > k.top)
+        return k.top;
+    float p = k.top - k.left, q = k.top - k.right;
+    return k.top + (p - q) * (p - q) / max(8.0 * (p + q), 1e-30);
+}
+#endif
+
+#ifdef LEAN
+// The slab's samples when every one counts alike: untagged, no BoxClip, and for DVR no
+// planeOpacity, lighting or pre-integration; several samples per plane (and the face pass).
+// Each sample has row 0, its part's whole length and the transfer function's own colour, and
+// the texture coordinate is linear along the ray. A program of its own: llvmpipe runs every
+// branch of a SIMD block with its lanes masked, so general code left in the shader costs
+// even where a uniform switches it off. Leading and trailing samples in cells that cannot emit
+// are left out (emittingEnd); MIP keeps one such neighbour each side for the peak refinement,
+// so the image is the general loop's.
+void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, vec2 reach) {
+    vec2 range = rangeOf(0);
+    float partLength = thickness / float(parts);
+    vec3 first = origin + dir * (-front + 0.5 * partLength);
+    vec3 tc = texCoord(first);
+    vec3 tcStep = dir * (partLength * uInvSpacing / uTexSize);
+    int j0 = 0, j1 = parts - 1;
+    if (uSkipCells) {
+        vec3 du = dir * (partLength * uInvSpacing);
+        j0 = emittingEnd(voxelCoord(first), du, parts, false);
+        if (j0 >= parts) discard; // nothing in this slab can emit
+        j1 = emittingEnd(voxelCoord(first), du, parts, true);
+    }
+#if MODE == 0
+    float lengthL0 = partLength * uInvL0;
+    vec3 emitted = vec3(0.0);
+    float depthSum = 0.0;
+    float transmitted = 1.0; // e^-depthSum
+    for (int j = j0; j <= j1; ++j) {
+        vec4 rgba = classify(normalised(dataAt(tc + float(j) * tcStep), range), 0);
+        float D = rgba.a * lengthL0;
+        float e = exp(-D);
+        emitted += transmitted * (D < 0.01 ? opacityOf(D) : 1.0 - e) * rgba.rgb;
+        transmitted *= e;
+        depthSum += D;
+    }
+    float alpha = opacityOf(depthSum);
+    if (!(alpha > 0.0)) discard;
+    fragColor = vec4(emitted, alpha);
+#else
+    // v is a monotone function of the texel (rising, or falling for a reversed dataRange;
+    // float rounding keeps the order), so the extreme texel gives the extreme v.
+    float orient = ((MODE == 1) == (range.y >= range.x)) ? 1.0 : -1.0;
+    PeakTracker k = noPeak();
+    for (int j = max(j0 - 1, -1); j <= min(j1 + 1, parts); ++j) {
+        float t = -front + (float(j) + 0.5) * partLength;
+        if (t < reach.x || t > reach.y) continue; // (only the neighbours can lie outside)
+        trackSample(k, orient * texture(uData, tc + float(j) * tcStep).r, j, parts);
+    }
+    float texel = orient * (parts > 1 ? refinedTop(k) : k.top);
+    float best = normalised(texel * uDataScale + uDataOffset, range);
+    fragColor = vec4(uintBitsToFloat(floatBitsToUint(best + 1.0) & ~uInfoMask), 0.0, 0.0, 0.0);
+#endif
 }
 #endif
 
@@ -251,9 +380,10 @@ void main() {
         if (any(lessThan(vLocal, uOwnMin)) || any(greaterThan(vLocal, uOwnMax))) discard;
         // One sample per plane, at this point: in an empty cell the fragment adds nothing
         // (DVR: no optical depth; MIP: below every value shown). Several samples are not
-        // tested one by one: the geometry already leaves out the rows of empty cells, and on
-        // llvmpipe a per-sample test costs more than the masked-off samples it saves (chest
-        // CT, 8 samples a plane: DVR 188 -> 162 ms, MIP 16 samples 283 -> 219 ms, same image).
+        // tested one by one: the geometry already leaves out the rows of empty cells, the lean
+        // loop trims a slab's empty ends (emittingEnd), and on llvmpipe a per-sample test
+        // costs more than the masked-off samples it saves (chest CT, 8 samples a plane: DVR
+        // 188 -> 162 ms, MIP 16 samples 283 -> 219 ms, same image).
 #if MODE == 0
         if (uSkipCells && uSlabSamples <= 1 && !cellMayEmit(vLocal)) discard;
 #elif MODE == 1
@@ -291,7 +421,7 @@ void main() {
         else if (rate < 0.0) tExit = min(tExit, -f / rate);
     }
     float front, back;
-    vec3 p = vLocal; // where the slab is sampled
+    vec3 origin = vLocal; // the slab is [origin - front dir, origin + back dir]
     if (uFacePass) {
         // A front face of the box: it stands for the ray's whole stretch through the volume
         // when no plane crosses that stretch (a sliver near a silhouette, thinner than the
@@ -303,7 +433,8 @@ void main() {
         if (uLayoutNear + (k + 0.5) * uPlaneSpacing < depth + depthRate * tExit) discard;
         front = 0.0;
         back = tExit - t0;
-        p = vLocal + dir * (0.5 * (t0 + tExit));
+        origin = vLocal + dir * t0;
+        depth += depthRate * t0;
     } else {
         // This plane stands for half the way to each neighbour; where a neighbour's point on
         // the ray is outside that stretch, no neighbour fragment exists there, so this one
@@ -314,6 +445,18 @@ void main() {
     }
     float thickness = front + back;
     if (thickness <= 0.0) discard;
+    vec3 p = origin + dir * (0.5 * (back - front)); // the middle of the slab
+    if (!uFacePass) p = vLocal; // (a plane's slab is sampled at the plane with one part)
+    // Samples along the slab: a plane's slab takes uSlabSamples; a face's sliver, shorter than
+    // a plane spacing, takes as many at the same spacing (at least one), so slivers near the
+    // silhouette are sampled as densely as the rest when slabs are thick.
+    int parts = max(uSlabSamples, 1);
+    if (uFacePass) parts = clamp(int(ceil(thickness * float(parts) / ds - 1e-3)), 1, parts);
+    // The ray's stretch through the volume around origin (a face's sliver is all of it).
+    vec2 reach = uFacePass ? vec2(0.0, back) : vec2(tEnter, tExit);
+#ifdef LEAN
+    leanSlab(origin, dir, front, thickness, parts, reach);
+#else
 
     int row = rowAt(p);
     vec2 range = rangeOf(row);
@@ -324,12 +467,12 @@ void main() {
     // slab cut by a box face gets each region's opacity and colour for its own length.
     int region = 0;
     float insideLength = 0.0;
-    vec2 inClip = vec2(0.0); // the ray's stretch inside the BoxClip box, from vLocal
+    vec2 inClip = vec2(0.0); // the ray's stretch inside the BoxClip box, from origin
     if (uHasBoxClip) {
         vec3 q = (uLocalToBox * vec4(p, 1.0)).xyz;
         region = all(greaterThanEqual(q, uBoxMin)) && all(lessThanEqual(q, uBoxMax)) ? 1 : 0;
-        // The slab is measured from vLocal.
-        inClip = slabInterval((uLocalToBox * vec4(vLocal, 1.0)).xyz,
+        // The slab is measured from origin.
+        inClip = slabInterval((uLocalToBox * vec4(origin, 1.0)).xyz,
                                    mat3(uLocalToBox) * dir, uBoxMin, uBoxMax);
         insideLength = max(0.0, min(back, inClip.y) - max(-front, inClip.x));
     }
@@ -340,43 +483,21 @@ void main() {
     // here (one part: sampled at the plane point itself). A plane then stands for several
     // samples along its ray, which costs far less than as many planes where each fragment has
     // a large fixed cost (llvmpipe: rasterisation, the set-up above, the float blend).
-    int parts = uFacePass ? 1 : max(uSlabSamples, 1);
     float partLength = thickness / float(parts);
     vec3 emitted = vec3(0.0);
     float depthSum = 0.0; // optical depth in front of the current part, within the slab
-#if !defined(TAGGED) && !defined(PREINTEGRATED) && !defined(LIGHTING)
-    if (!uHasBoxClip && !uHasPlaneOpacity && parts > 1) {
-        // The same parts, lean: without tags, BoxClip or planeOpacity every part has row 0,
-        // its whole length and the transfer function's own colour, and the texture coordinate
-        // is linear along the ray (llvmpipe runs this loop for every pixel of a SIMD block,
-        // so what it leaves out of each sample is what the frame saves).
-        vec3 tc = texCoord(vLocal + dir * (-front + 0.5 * partLength));
-        vec3 step = dir * (partLength * uInvSpacing / uTexSize);
-        float lengthL0 = partLength * uInvL0;
-        float transmitted = 1.0; // e^-depthSum
-        for (int j = 0; j < parts; ++j) {
-            vec4 rgba = classify(normalised(dataAt(tc + float(j) * step), range), 0);
-            float D = rgba.a * lengthL0;
-            float e = exp(-D);
-            emitted += transmitted * (D < 0.01 ? opacityOf(D) : 1.0 - e) * rgba.rgb;
-            transmitted *= e;
-            depthSum += D;
-        }
-        parts = 0; // done: the general loop below runs no part
-    }
-#endif
     for (int j = 0; j < parts; ++j) {
         float a = parts == 1 ? -front : -front + float(j) * partLength;
         float b = parts == 1 ? back : a + partLength;
         float middle = 0.5 * (a + b);
-        vec3 x = parts == 1 ? p : vLocal + dir * middle;
+        vec3 x = parts == 1 ? p : origin + dir * middle;
         float inLength = insideLength;
         float outLength = outsideLength;
         if (parts > 1) {
             inLength = uHasBoxClip ? max(0.0, min(b, inClip.y) - max(a, inClip.x)) : 0.0;
             outLength = max((b - a) - inLength, 0.0);
         }
-        float xDepth = parts == 1 ? depth : depth + depthRate * middle;
+        float xDepth = parts == 1 && !uFacePass ? depth : depth + depthRate * middle;
         float m = uHasPlaneOpacity ? planeOpacityAt((xDepth - uBoxNear) / (uBoxFar - uBoxNear))
                                    : 1.0;
         float wIn = uRegionOpacity.y * inLength;
@@ -392,8 +513,8 @@ void main() {
 #endif
         vec3 tc = texCoord(x);
 #ifdef PREINTEGRATED
-        float vFront = normalised(dataAt(texCoord(vLocal + dir * a)), rangeX);
-        float vBack = normalised(dataAt(texCoord(vLocal + dir * b)), rangeX);
+        float vFront = normalised(dataAt(texCoord(origin + dir * a)), rangeX);
+        float vBack = normalised(dataAt(texCoord(origin + dir * b)), rangeX);
         vec4 segment = texture(uPreIntegrated, (vec2(vFront, vBack) * float(PRE_SIZE - 1) + 0.5) /
                                                    float(PRE_SIZE));
         vec3 C = segment.rgb;
@@ -418,7 +539,7 @@ void main() {
         C = (wIn * mix(C, uRegionColor[1], uRegionWeight.y) +
              wOut * mix(C, uRegionColor[0], uRegionWeight.x)) / (wIn + wOut);
 #ifdef LIGHTING
-        C = shade(C, tc, rangeX, parts == 1 ? vLocal : x);
+        C = shade(C, tc, rangeX, parts == 1 ? p : x);
 #endif
         // exp(-0) is exactly 1: one part gives C alpha as before.
         emitted += exp(-depthSum) * opacityOf(D) * C;
@@ -441,37 +562,31 @@ void main() {
     // and every crossing of a voxel-centre plane in the slab, so thick slabs still find them.
     float best = MODE == 1 ? -1.0 : 2.0;
     int bestInfo = 0;
-    vec3 u0 = voxelCoord(vLocal);
+    vec3 u0 = voxelCoord(origin);
     vec3 du = dir * uInvSpacing;
-    int parts = uFacePass ? 1 : max(uSlabSamples, 1);
-#ifndef TAGGED
-    if (!uMipPeaks && !uHasBoxClip && !uFacePass && parts > 1) {
-        // The same samples, lean: untagged and without a BoxClip every sample counts with row
-        // 0 and region 0, and v is a monotone function of the texel (rising, or falling for a
-        // reversed dataRange; float rounding keeps the order), so the extreme texel gives the
-        // extreme v. The texture coordinate is linear along the ray (stepped: sample positions
-        // equal the general loop's up to float rounding).
-        float partLength = thickness / float(parts);
-        vec3 tc = texCoord(vLocal + dir * (-front + 0.5 * partLength));
-        vec3 step = dir * (partLength * uInvSpacing / uTexSize);
-        bool larger = (MODE == 1) == (range.y >= range.x);
-        float extreme = texture(uData, tc).r;
-        for (int j = 1; j < parts; ++j) {
-            float texel = texture(uData, tc + float(j) * step).r;
-            extreme = larger ? max(extreme, texel) : min(extreme, texel);
-        }
-        best = normalised(extreme * uDataScale + uDataOffset, range);
-    } else
-#endif
     if (!uMipPeaks) {
         // Evenly spaced samples only (the plane point, or each part's middle), like a ray
         // caster stepping at that spacing: a quarter of the fetches, thin peaks can be missed.
+        // Several parts: the peak refined from the most extreme sample and its neighbours,
+        // which may be the neighbouring slabs' nearest samples where the ray has them.
         float partLength = thickness / float(parts);
-        for (int j = 0; j < parts; ++j) {
-            float t = uFacePass ? 0.5 * back
-                      : parts == 1 ? 0.0
-                                   : -front + (float(j) + 0.5) * partLength;
-            considerExtreme(vLocal + dir * t, best, bestInfo);
+        PeakTracker k = noPeak();
+        int outer = parts > 1 ? 1 : 0;
+        for (int j = -outer; j < parts + outer; ++j) {
+            float t = parts == 1 ? 0.5 * (back - front) : -front + (float(j) + 0.5) * partLength;
+            if (t < reach.x || t > reach.y) continue; // (only the neighbours can lie outside)
+            int info;
+            float v = valueAt(parts == 1 ? p : origin + dir * t, info);
+            float s = v < 0.0 ? -1e30 : (MODE == 1 ? v : -v);
+            if (j >= 0 && j < parts && s > k.top) {
+                best = v;
+                bestInfo = info;
+            }
+            trackSample(k, s, j, parts);
+        }
+        if (parts > 1 && best >= 0.0 && best <= 1.0) {
+            float refined = refinedTop(k);
+            best = clamp(MODE == 1 ? refined : -refined, 0.0, 1.0);
         }
     } else if (parts == 1) {
         vec3 tCentre = (floor(u0) + 0.5 - u0) / mix(du, vec3(1e-30), equal(du, vec3(0.0)));
@@ -479,12 +594,12 @@ void main() {
         for (int i = 0; i < 4; ++i) {
             float t = ts[i];
             if (t < -front || t > back) continue;
-            considerExtreme(vLocal + dir * t, best, bestInfo);
+            considerExtreme(origin + dir * t, best, bestInfo);
         }
     } else {
         float partLength = thickness / float(parts);
         for (int j = 0; j < parts; ++j)
-            considerExtreme(vLocal + dir * (-front + (float(j) + 0.5) * partLength), best,
+            considerExtreme(origin + dir * (-front + (float(j) + 0.5) * partLength), best,
                             bestInfo);
         for (int axis = 0; axis < 3; ++axis) {
             float d = du[axis];
@@ -494,7 +609,7 @@ void main() {
             float first = ceil(min(ua, ub) - 0.5) + 0.5;
             float last = max(ua, ub);
             for (int k = 0; k < 256 && first + float(k) <= last; ++k)
-                considerExtreme(vLocal + dir * ((first + float(k) - u0[axis]) / d), best,
+                considerExtreme(origin + dir * ((first + float(k) - u0[axis]) / d), best,
                                 bestInfo);
         }
     }
@@ -504,6 +619,7 @@ void main() {
     fragColor = vec4(uintBitsToFloat((floatBitsToUint(best + 1.0) & ~uInfoMask) | uint(bestInfo)),
                      0.0, 0.0, 0.0);
 #endif
+#endif // LEAN
 }
 )GLSL";
 

@@ -91,8 +91,9 @@ const Node& sharedCacheKey() {
     return *key;
 }
 
-std::string prelude(int mode, bool tagged, bool lighting, bool preIntegrated) {
+std::string prelude(int mode, bool tagged, bool lighting, bool preIntegrated, bool lean = false) {
     std::string s = "#version 330 core\n#define MODE " + std::to_string(mode) + "\n";
+    if (lean) s += "#define LEAN\n";
     if (tagged) s += "#define TAGGED\n";
     if (lighting) s += "#define LIGHTING\n";
     if (preIntegrated) s += "#define PREINTEGRATED\n";
@@ -131,11 +132,15 @@ struct SliceShared {
     glm::ivec2 opaqueDepthSize{0};
     int max3DTextureSize = 0;
 
-    const Program& sliceProgram(int mode, bool tagged, bool lighting, bool preIntegrated) {
-        const int key = mode | (tagged ? 4 : 0) | (lighting ? 8 : 0) | (preIntegrated ? 16 : 0);
+    /// `lean`: the variant with only the slab loop of samples that all count alike (see
+    /// LEAN in SliceShaders.h); the caller decides when that holds.
+    const Program& sliceProgram(int mode, bool tagged, bool lighting, bool preIntegrated,
+                                bool lean) {
+        const int key = mode | (tagged ? 4 : 0) | (lighting ? 8 : 0) | (preIntegrated ? 16 : 0) |
+                        (lean ? 32 : 0);
         auto it = slicePrograms.find(key);
         if (it != slicePrograms.end()) return it->second;
-        const std::string head = prelude(mode, tagged, lighting, preIntegrated);
+        const std::string head = prelude(mode, tagged, lighting, preIntegrated, lean);
         const Shader vertex(GL_VERTEX_SHADER, head + shaders::sliceVertex, "volume slice");
         const Shader fragment(GL_FRAGMENT_SHADER,
                               head + shaders::sliceCommon + shaders::sliceFragment, "volume slice");
@@ -686,7 +691,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     const double localPerEyeAxis = glm::length(eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0));
     const double depthExtent = boxDepth.y - boxDepth.x;
     const double autoSpacing = 0.5 * L0 / localPerEyeAxis;
-    const int slabSamples = mode != kAverage ? std::clamp(settings.samplesPerPlane, 1, 64) : 1;
+    const int slabSamples = mode != kAverage ? std::clamp(settings.samplesPerPlane, 1, 256) : 1;
     long still = settings.numPlanes > 0
                      ? long(settings.numPlanes)
                      : long(std::ceil(depthExtent / (autoSpacing * double(slabSamples))));
@@ -823,7 +828,13 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         v.vertexBuffer.setData(v.vertices, GL_STREAM_DRAW);
 
         // Uniforms of this volume and frame.
-        const Program& program = shared.sliceProgram(mode, tagged, lighting, preIntegrated);
+        // The lean program when every sample of a slab counts alike (several of them, no
+        // tags, no BoxClip; DVR without planeOpacity, lighting or pre-integration; MIP/MINIP
+        // without the voxel-centre crossings).
+        const bool lean = slabSamples > 1 && !tagged && !volume.boxClip &&
+                          (mode == kDvr ? !lighting && !preIntegrated && !hasPlaneOpacity
+                                        : (mode == kMip || mode == kMinip) && !settings.mipPeaks);
+        const Program& program = shared.sliceProgram(mode, tagged, lighting, preIntegrated, lean);
         program.use();
         program.set("uModelView", glm::mat4(modelView));
         program.set("uProjection", glm::mat4(view.projection));
@@ -842,6 +853,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         program.set("uPlaneSpacing", float(layout.spacing));
         program.set("uSlabSamples", slabSamples);
         program.set("uMipPeaks", settings.mipPeaks ? 1 : 0);
+        program.set("uRefinePeaks", settings.refinePeaks ? 1 : 0);
         program.set("uSkipCells", skipCells ? 1 : 0);
         if (skipCells) {
             program.set("uCellScale", 1.0f / float(EmptyCells::kCellSize));

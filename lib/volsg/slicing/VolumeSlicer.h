@@ -26,6 +26,10 @@ struct SlicingSettings {
     /// MIP, MINIP: also sample every voxel-centre crossing (finds thin peaks); false: only the
     /// samplesPerPlane evenly spaced samples (cheaper, a ray caster's error at that step).
     bool mipPeaks = true;
+    /// MIP, MINIP without mipPeaks, several samples per plane: take the extreme from the
+    /// parabola through the most extreme sample and its two neighbours (evenly spaced samples
+    /// always come out below a peak that lies between them). False: the largest sample.
+    bool refinePeaks = true;
     /// DVR and MIP: skip the cells of 8^3 voxels that cannot emit under the transfer function
     /// (EmptyCells, CellRows). False only to measure what it saves.
     bool skipEmptyCells = true;

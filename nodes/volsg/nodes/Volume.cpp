@@ -77,6 +77,7 @@ void Volume::render(RenderAction& action) {
     settings.interactivePlanes = interactivePlanes();
     settings.samplesPerPlane = samplesPerPlane();
     settings.mipPeaks = mipPeaks();
+    settings.refinePeaks = refinePeaks();
     settings.nearest = interpolation() == NEAREST;
     settings.preIntegrated = preIntegrated();
     settings.lighting = lighting();

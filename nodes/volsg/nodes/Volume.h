@@ -19,13 +19,17 @@ public:
     SFEnum renderMode{this, "renderMode", renderModeNames, DVR};
     SFInt32 numPlanes{this, "numPlanes", 0};                 ///< 0: >= 2 per voxel along the view
     SFInt32 interactivePlanes{this, "interactivePlanes", 0}; ///< 0: numPlanes / 4
-    /// DVR: samples per plane, composited along each pixel's ray inside the plane's slab
+    /// DVR, MIP, MINIP: samples per plane, taken along each pixel's ray inside the plane's slab
     /// (fewer planes for the same sampling; 0 numPlanes keeps 2 samples per voxel).
     SFInt32 samplesPerPlane{this, "samplesPerPlane", 1};
     /// MIP, MINIP: also sample where each ray crosses a voxel-centre plane, so thin peaks are
     /// found at any plane count. FALSE: only samplesPerPlane evenly spaced samples per plane
     /// (about a quarter of the texture fetches; the error of a ray caster at that step).
     SFBool mipPeaks{this, "mipPeaks", true};
+    /// MIP, MINIP without mipPeaks, several samples per plane: the extreme from the parabola
+    /// through the most extreme sample and its neighbours (evenly spaced samples always miss
+    /// part of a peak). FALSE: the most extreme sample itself.
+    SFBool refinePeaks{this, "refinePeaks", true};
     SFEnum interpolation{this, "interpolation", interpolationNames, LINEAR};
     SFBool preIntegrated{this, "preIntegrated", false};
     SFBool lighting{this, "lighting", false};
