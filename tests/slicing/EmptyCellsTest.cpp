@@ -225,3 +225,35 @@ TEST_CASE("a transfer-function edit reclassifies the cells") {
     Renderer other;
     CHECK(other.render(*freshRoot, options).pixels == edited.pixels);
 }
+
+TEST_CASE("rows grow with the plane count, and a brick whose cells all count is one box") {
+    // Each row costs a plane cut per plane and a draw: with many planes the rows are several
+    // cells across (fewer, larger boxes), which leaves less air out but changes no image.
+    OSMesaContext context;
+    const TransferFunction1D tf = transferFunction({{0.0, 0.0}, {0.05, 0.02}, {1.0, 0.6}},
+                                                   {{0, 0.2}, {1, 1}}, {{0, 0.9}, {1, 0.3}});
+    auto camera = framing(*ball(), {0.4f, 0.3f, 1.0f});
+    SlicingSettings few;
+    few.numPlanes = 64;
+    SlicingSettings many;
+    many.numPlanes = 2000; // 2000 planes x 25 rows of single cells: over the cut budget
+    const SkipPair coarse = renderBoth(ballVolume(tf, VolumeRenderMode::DVR), few, *camera);
+    const SkipPair fine = renderBoth(ballVolume(tf, VolumeRenderMode::DVR), many, *camera);
+    MESSAGE("64 planes: " << coarse.skipping.stats.cellRows << " rows of "
+                          << coarse.skipping.stats.cellRowGroup
+                          << " cells; 2000 planes: " << fine.skipping.stats.cellRows << " rows of "
+                          << fine.skipping.stats.cellRowGroup << " cells");
+    CHECK(coarse.skipping.stats.cellRowGroup == 1);
+    CHECK(fine.skipping.stats.cellRowGroup > 1);
+    CHECK(fine.skipping.stats.cellRows > 0);
+    CHECK(fine.skipping.stats.cellRows < coarse.skipping.stats.cellRows);
+    CHECK(difference(fine.skipping.gl, fine.plain.gl).max < 0.01 * k8Bit);
+    CHECK(difference(coarse.skipping.gl, coarse.plain.gl).max < 0.01 * k8Bit);
+
+    // Opaque from the lowest value up: no cell is empty, and the rows are the brick itself.
+    const TransferFunction1D everywhere = transferFunction({{0.0, 0.3}, {1.0, 0.6}});
+    const SkipPair full = renderBoth(ballVolume(everywhere, VolumeRenderMode::DVR), few, *camera);
+    CHECK(full.skipping.stats.emptyCells == 0.0);
+    CHECK(full.skipping.stats.cellRows == 1);
+    CHECK(full.skipping.gl.pixels == full.plain.gl.pixels);
+}

@@ -30,6 +30,7 @@ struct SlicingStats {
     /// Rows of cells cut and drawn instead of whole bricks (lib/volsg/slicing/CellRows.h): the
     /// empty space around them makes no fragment. 0: whole bricks were cut.
     int cellRows = 0;
+    int cellRowGroup = 1; ///< rows were this many cells across (each way)
     /// Per-frame CPU work of the node, on a steady clock: the Volume node gathering its state
     /// (data, transfer functions, clips) and the slicer's work before any draw is issued (plane
     /// layout, brick order and emptiness, cutting, vertex assembly, and table rebuilds when a

@@ -44,6 +44,8 @@ constexpr int kMaxClipPlanes = 32;
 constexpr int kMaxLights = 8;
 constexpr int kPlaneOpacitySize = 1024;
 constexpr int kMaxPlanes = 100000;
+/// Planes x rows of empty-space cells above which the rows grow (see rowGroup in render).
+constexpr double kRowCutBudget = 20000.0;
 /// The fewest planes the viewer's interactive plane scale may leave (unless fewer were asked).
 constexpr long kMinScaledPlanes = 8;
 /// Inventor's default environment: white ambient light of intensity 0.2 (as shapes use).
@@ -771,6 +773,20 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     }
     const glm::dvec3 towardsVolume = view.orthographic ? viewer : -viewer; // the box is centred
     const int rowAxis = CellRows::axisFor(towardsVolume);
+    // Each row costs a plane cut per plane and a draw: with many planes the rows grow (group x
+    // group cells across) until planes x rows is at most kRowCutBudget, which keeps the
+    // frame's CPU work under about a millisecond.
+    int rowGroup = 1;
+    if (rowReach >= 0) {
+        const glm::ivec3 n = v.cells.cells();
+        const int ns = n[(rowAxis + 1) % 3], nt = n[(rowAxis + 2) % 3];
+        auto rowsAcross = [&](int g) {
+            return double((ns + g - 1) / g) * double((nt + g - 1) / g);
+        };
+        while (double(layout.count) * rowsAcross(rowGroup) > kRowCutBudget && rowGroup < 64)
+            rowGroup *= 2;
+    }
+    frame.cellRowGroup = rowGroup;
     v.vertices.clear();
     for (const int i : v.order) {
         BrickState& s = v.bricks[std::size_t(i)];
@@ -787,7 +803,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         s.first = GLint(v.vertices.size());
         if (rowReach >= 0) {
             v.rows.rowsOf(b, rowAxis, grid.spacing(), halfExtent, viewer, view.orthographic,
-                          s.rows);
+                          rowGroup, s.rows);
             for (const CellRow& row : s.rows) {
                 ProxyPlaneCutter::cutInto(row.boxMin - margin, row.boxMax + margin, modelView,
                                           layout, clipDepth.x, v.slices);
