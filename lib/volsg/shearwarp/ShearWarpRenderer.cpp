@@ -11,6 +11,7 @@
 #include <set>
 #include <thread>
 #include <type_traits>
+#include <utility>
 
 #include <volsg/core/Error.h>
 #include <volsg/shearwarp/PackedVoxel.h>
@@ -345,6 +346,23 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         }
     }
     frame.stats.fastPath = pureDvr;
+    // Pure MIP: every object MIP (and MIP between them), no clipped voxels (they would need
+    // their own look), no opaque geometry to test against; the value-sorted voxels exist.
+    bool pureMip = view.interObject == InterObjectCompositing::MIP || fo.size() == 1;
+    for (FrameObject& f : fo) {
+        if (!pureMip) break;
+        pureMip = f.source->compositing == ObjectCompositing::MIP && f.parts[0].draw;
+        for (const RenderListEntry& e : f.list->entries)
+            pureMip = pureMip && e.firstClipped == e.lastInSlice;
+    }
+    pureMip = pureMip && view.valueSortedMip && view.opaqueWindowDepth.empty();
+    std::vector<const ValueSortedVoxels*> sortedVoxels;
+    for (FrameObject& f : fo)
+        if (pureMip) {
+            sortedVoxels.push_back(f.source->object->valueSorted());
+            pureMip = sortedVoxels.back() != nullptr;
+        }
+    frame.stats.valueSortedMip = pureMip;
 
     // --- Buffers -------------------------------------------------------------------------------
     const std::size_t pixels = std::size_t(W) * std::size_t(H);
@@ -423,7 +441,102 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
 
     // Per band: the intermediate pixels composited, (u0, v0, u1, v1); all others stay empty.
     std::vector<glm::ivec4> touchedBoxes(std::size_t(threads), glm::ivec4(W, H, 0, 0)); // empty
-    parallelFor(threads, [&](int t) {
+    if (pureMip) {
+        // Nearest intermediate pixel of voxel (a, b) of slice k: a + round(tu), b + round(tv),
+        // as one offset per slice; slices left out while interacting have none.
+        constexpr std::int64_t kSkip = std::numeric_limits<std::int64_t>::min();
+        std::vector<std::int64_t> sliceOffset(static_cast<std::size_t>(nc));
+        const int bits[3] = {0, ValueSortedVoxels::kBitsI,
+                             ValueSortedVoxels::kBitsI + ValueSortedVoxels::kBitsJ};
+        const std::uint32_t masks[3] = {(1u << ValueSortedVoxels::kBitsI) - 1,
+                                        (1u << ValueSortedVoxels::kBitsJ) - 1,
+                                        (1u << ValueSortedVoxels::kBitsK) - 1};
+        mipValue_.resize(std::size_t(threads));
+        mipSlice_.resize(std::size_t(threads));
+        for (std::size_t oi = 0; oi < fo.size(); ++oi) {
+            const FrameObject& f = fo[oi];
+            const ValueSortedVoxels& sorted = *sortedVoxels[oi];
+            for (int k = 0; k < nc; ++k)
+                sliceOffset[std::size_t(k)] = k % f.sliceStep != f.slicePhase
+                                                  ? kSkip
+                                                  : std::int64_t(std::lround(vb0 - sb * k)) * W +
+                                                        std::int64_t(std::lround(ua0 - sa * k));
+            // Values below the first one the table shows cannot be a shown maximum.
+            int firstShown = 0;
+            while (firstShown < 4096 && !(f.mipTable[std::size_t(firstShown)].w > 0.0f))
+                ++firstShown;
+            const std::uint32_t begin = sorted.start[std::size_t(firstShown)];
+            const std::uint32_t end = sorted.start[4096];
+            // Each thread a run of the order, into its own buffers: later runs hold larger
+            // values, so the merge takes the last thread that wrote a pixel.
+            parallelFor(threads, [&](int t) {
+                std::vector<std::uint16_t>& value = mipValue_[std::size_t(t)];
+                std::vector<std::uint16_t>& slice = mipSlice_[std::size_t(t)];
+                value.assign(pixels, 0);
+                slice.resize(pixels);
+                const std::uint32_t from =
+                    begin + std::uint32_t(std::uint64_t(end - begin) * std::uint64_t(t) /
+                                          std::uint64_t(threads));
+                const std::uint32_t to =
+                    begin + std::uint32_t(std::uint64_t(end - begin) * std::uint64_t(t + 1) /
+                                          std::uint64_t(threads));
+                const std::uint32_t* position = sorted.position.data();
+                std::uint64_t drawn = 0;
+                const int shiftA = bits[a], shiftB = bits[b], shiftC = bits[c];
+                const std::uint32_t maskA = masks[a], maskB = masks[b], maskC = masks[c];
+                int m = int(std::upper_bound(sorted.start.begin(), sorted.start.end(), from) -
+                            sorted.start.begin()) -
+                        1;
+                for (std::uint32_t i = from; i < to;) {
+                    while (sorted.start[std::size_t(m) + 1] <= i)
+                        ++m;
+                    const std::uint32_t stop = std::min(to, sorted.start[std::size_t(m) + 1]);
+                    const auto stored = std::uint16_t(m + 1);
+                    for (; i < stop; ++i) {
+                        const std::uint32_t pos = position[i];
+                        const unsigned kc = (pos >> shiftC) & maskC;
+                        const std::int64_t offset = sliceOffset[kc];
+                        if (offset == kSkip) continue;
+                        ++drawn;
+                        const std::size_t p =
+                            std::size_t(std::int64_t((pos >> shiftB) & maskB) * W +
+                                        std::int64_t((pos >> shiftA) & maskA) + offset);
+                        value[p] = stored;
+                        slice[p] = std::uint16_t(kc);
+                    }
+                }
+                bands_[std::size_t(t)].voxels = drawn;
+            });
+            for (BandScratch& s : bands_)
+                frame.stats.voxelsTouched += std::exchange(s.voxels, 0);
+            // Merge by rows: the object's layer C(v) A(v), MIP with what is there.
+            parallelFor(threads, [&](int t) {
+                const std::size_t p0 = std::size_t(H * t / threads) * std::size_t(W);
+                const std::size_t p1 = std::size_t(H * (t + 1) / threads) * std::size_t(W);
+                for (std::size_t p = p0; p < p1; ++p) {
+                    int best = 0, bestSlice = 0;
+                    for (int u = threads - 1; u >= 0 && best == 0; --u)
+                        if (const std::uint16_t v = mipValue_[std::size_t(u)][p]; v != 0) {
+                            best = v;
+                            bestSlice = mipSlice_[std::size_t(u)][p];
+                        }
+                    if (best == 0) continue;
+                    const glm::vec4 layer = f.mipTable[std::size_t(best - 1)];
+                    glm::vec4& g = global_[p];
+                    if (layer.w >= kPickAlpha && layer.w > g.w) {
+                        frame.pickObject[p] = std::int16_t(oi);
+                        frame.pickSlice[p] = float(bestSlice);
+                    }
+                    g = glm::max(g, layer);
+                }
+            });
+        }
+        touchedBoxes.assign(1, glm::ivec4(0, 0, W, H));
+        for (BandScratch& s : bands_)
+            s.hidden = s.entries = 0; // (voxels counted above)
+    }
+    parallelFor(pureMip ? 1 : threads, [&](int t) {
+        if (pureMip) return; // drawn above
         BandScratch& s = bands_[std::size_t(t)];
         const int r0 = H * t / threads, r1 = H * (t + 1) / threads;
         const int bandRows = r1 - r0;

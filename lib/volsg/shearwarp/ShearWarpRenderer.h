@@ -63,6 +63,13 @@ struct ShearWarpPick {
 /// or ends, merged into the global buffer with the inter-object mode (DVR: over; MIP: per-channel
 /// maximum of the premultiplied layers).
 ///
+/// Pure MIP (every object MIP, MIP between them, nothing clipped, no opaque geometry) takes
+/// RTVR's value-sorted path: each object's voxels ordered by value (VoxelObject::valueSorted)
+/// are projected lowest first onto their nearest intermediate pixel, each simply overwriting
+/// it, from the first value the transfer function shows; threads take runs of the order into
+/// buffers of their own, merged by maximum. The resampling is nearest-pixel where the general
+/// path interpolates each slice bilinearly (errors in README.md).
+///
 /// Threads take bands of intermediate rows (voxels of a drawn range are sorted by row, so a
 /// band is a binary search away) and then bands of output rows. The RenderLists are locked
 /// for the frame. Throws Error for a perspective projection.
@@ -95,6 +102,8 @@ private:
     std::vector<std::int32_t> nextOpen_; ///< per pixel: itself, or a later column once opaque
     std::vector<int> opaqueCount_;       ///< per intermediate row: stopped pixels
     std::vector<BandScratch> bands_;
+    /// Pure MIP: per thread, the largest value + 1 (0: none) and its slice per pixel.
+    std::vector<std::vector<std::uint16_t>> mipValue_, mipSlice_;
     ShearWarpFrame spare_; ///< recycled buffers
 };
 

@@ -75,6 +75,9 @@ struct ShearWarpView {
     /// (opacity-corrected): the fast setting while the user interacts, as fewer planes are for
     /// the slicer. Thin-layer objects keep every slice. 1: every slice (full quality).
     int sliceStep = 1;
+    /// Pure MIP scenes take the value-sorted path (ShearWarpRenderer); false: the general
+    /// two-buffer path with bilinear slices (comparisons, benchmarks).
+    bool valueSortedMip = true;
 };
 
 /// What a frame did.
@@ -84,9 +87,10 @@ struct ShearWarpStats {
     std::uint64_t voxelsTouched = 0; ///< voxels read (in the drawn ranges of the rows drawn)
     std::uint64_t voxelsHidden = 0;  ///< of them skipped: all their pixels had stopped (pure DVR)
     std::uint64_t entriesDrawn = 0;
-    bool fastPath = false; ///< pure DVR: one pixel buffer
-    int sliceStep = 1;     ///< the view's slice step, as used (clamped to the volume)
-    double engineMs = 0.0; ///< wall time of ShearWarpRenderer::render
+    bool fastPath = false;       ///< pure DVR: one pixel buffer
+    bool valueSortedMip = false; ///< pure MIP: value-sorted voxels, nearest pixel, no search
+    int sliceStep = 1;           ///< the view's slice step, as used (clamped to the volume)
+    double engineMs = 0.0;       ///< wall time of ShearWarpRenderer::render
     /// CPU time of render() summed over the threads it ran on (its frame time on idle cores
     /// is between engineCpuMs / threads and engineCpuMs).
     double engineCpuMs = 0.0;

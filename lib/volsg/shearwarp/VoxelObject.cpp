@@ -197,6 +197,28 @@ RenderList& VoxelObject::renderList(int axis) {
     return *list;
 }
 
+const ValueSortedVoxels* VoxelObject::valueSorted() {
+    if (!ValueSortedVoxels::fits(dimensions_)) return nullptr;
+    std::lock_guard lock(buildMutex_);
+    if (!valueSorted_) {
+        // A counting sort by value of the voxels in extraction order, which is (k, j, i).
+        auto sorted = std::make_unique<ValueSortedVoxels>();
+        const std::size_t n = i_.size();
+        for (std::size_t v = 0; v < n; ++v)
+            ++sorted->start[std::size_t(std::min<unsigned>(value12_[v], 4095u)) + 1];
+        for (std::size_t m = 1; m < sorted->start.size(); ++m)
+            sorted->start[m] += sorted->start[m - 1];
+        std::array<std::uint32_t, 4096> next{};
+        std::copy(sorted->start.begin(), sorted->start.end() - 1, next.begin());
+        sorted->position.resize(n);
+        for (std::size_t v = 0; v < n; ++v)
+            sorted->position[next[std::min<unsigned>(value12_[v], 4095u)]++] =
+                ValueSortedVoxels::pack(i_[v], j_[v], k_[v]);
+        valueSorted_ = std::move(sorted);
+    }
+    return valueSorted_.get();
+}
+
 void VoxelObject::adoptRenderList(std::unique_ptr<RenderList> list) {
     if (!list) throw Error("no RenderList to adopt");
     list->checkConsistent(i_.size(), dimensions_);
@@ -247,6 +269,9 @@ std::size_t VoxelObject::memoryBytes() const {
     std::size_t bytes = i_.size() * (3 * sizeof(std::uint16_t) + 2 * sizeof(std::uint16_t) + 1);
     for (const auto& list : lists_)
         if (list) bytes += list->memoryBytes();
+    if (valueSorted_)
+        bytes +=
+            valueSorted_->position.size() * sizeof(std::uint32_t) + sizeof(valueSorted_->start);
     return bytes;
 }
 

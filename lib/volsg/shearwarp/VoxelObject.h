@@ -35,6 +35,25 @@ struct ObjectSource {
 ///   transfer function's data range; so the threshold is "change of v across one voxel").
 enum class VoxelSelection { Visible, Surface, Gradient };
 
+/// An object's voxels ordered by value for pure MIP (RTVR 3.4, after Mroz et al. 2000): drawn
+/// from the lowest value to the highest, each voxel simply overwrites its pixel, so no maximum
+/// is searched and the values no transfer function shows at the low end are never read. One
+/// copy serves every viewing axis.
+struct ValueSortedVoxels {
+    static constexpr int kBitsI = 11, kBitsJ = 11, kBitsK = 10; ///< dimensions up to 2048^2 x 1024
+    /// Index-space position i | j << 11 | k << 22, ascending value, then (k, j, i).
+    std::vector<std::uint32_t> position;
+    /// Voxels of value12 v: [start[v], start[v + 1]).
+    std::array<std::uint32_t, 4097> start{};
+    static constexpr std::uint32_t pack(unsigned i, unsigned j, unsigned k) {
+        return i | (j << kBitsI) | (k << (kBitsI + kBitsJ));
+    }
+    /// Whether a grid of these dimensions fits the packing.
+    static bool fits(const glm::ivec3& d) {
+        return d.x <= (1 << kBitsI) && d.y <= (1 << kBitsJ) && d.z <= (1 << kBitsK);
+    }
+};
+
 struct ExtractionSpec {
     ObjectSource source;
     VoxelSelection selection = VoxelSelection::Visible;
@@ -65,6 +84,9 @@ public:
     /// The RenderList for principal axis 0, 1 or 2, built on first use (thread-safe).
     RenderList& renderList(int axis);
     bool hasRenderList(int axis) const;
+    /// The voxels ordered by value, built on first use (thread-safe); nullptr when the grid
+    /// is too large for its packing (ValueSortedVoxels::fits).
+    const ValueSortedVoxels* valueSorted();
     /// Takes a RenderList kept outside the object (the series' disk cache) for its axis
     /// instead of sorting one; an existing list of that axis stays. Throws Error when the list
     /// does not fit the object (RenderList::checkConsistent).
@@ -102,6 +124,7 @@ private:
     std::vector<std::uint8_t> magnitude8_;
     mutable std::mutex buildMutex_;
     std::array<std::unique_ptr<RenderList>, 3> lists_;
+    std::unique_ptr<ValueSortedVoxels> valueSorted_;
     unsigned builds_ = 0; // guarded by buildMutex_
     void build(RenderList& list, int axis) const;
 };
