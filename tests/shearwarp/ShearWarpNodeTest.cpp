@@ -304,3 +304,27 @@ TEST_CASE("while interacting the node skips slices, lowered further by the viewe
     CHECK(error < 0.01);                      // and stays close to full quality
     CHECK(stillAgain.pixels == still.pixels); // full quality as soon as the interaction stops
 }
+
+TEST_CASE("valueSortedMip chooses the value-sorted or the general MIP path") {
+    OSMesaContext context;
+    for (const bool sorted : {true, false}) {
+        const ref_ptr<Node> root = readSceneFromString(
+            sceneWith("MARSCHNER_LOBB", "",
+                      std::string("    valueSortedMip ") + (sorted ? "TRUE" : "FALSE") +
+                          "\n    TransferFunction { alpha [ 0 0, 1 0.4 ] }\n"
+                          "    VolumeObject { compositing MIP }\n"));
+        Renderer renderer;
+        const RenderOptions options = smallOptions();
+        const Image image = renderer.render(*root, options);
+        const ShearWarpVolume* volume = findNode<ShearWarpVolume>(*root);
+        REQUIRE(volume);
+        REQUIRE(volume->lastFrame());
+        CHECK(volume->lastFrame()->stats.valueSortedMip == sorted);
+        RayCastOptions rays;
+        rays.tolerance = 1e-3;
+        const double error = rmse(image, renderReference(*root, options, nullptr, rays));
+        MESSAGE(std::string(sorted ? "value-sorted" : "general")
+                << " MIP RMSE versus renderReference: " << error);
+        CHECK(error < 0.01);
+    }
+}

@@ -25,7 +25,9 @@ struct RtvrScene {
 std::vector<RtvrScene> rtvrScenes();
 
 /// The rendering modes of table 1. The scene files are written in Dvr.
-enum class RtvrMode { Mip, Dvr, DvrMono, MixedMipDvr };
+/// MipGeneral: MIP through the general two-buffer path (ShearWarpVolume.valueSortedMip FALSE),
+/// beside the value-sorted one.
+enum class RtvrMode { Mip, MipGeneral, Dvr, DvrMono, MixedMipDvr };
 const char* rtvrModeName(RtvrMode mode);
 
 struct RtvrSuiteSettings {

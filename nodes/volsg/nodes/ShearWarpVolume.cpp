@@ -293,6 +293,7 @@ void ShearWarpVolume::render(RenderAction& action) {
     view.interObject =
         interObjectCompositing() == MIP ? InterObjectCompositing::MIP : InterObjectCompositing::DVR;
     view.threads = threads();
+    view.valueSortedMip = valueSortedMip();
     view.sliceStep = sliceStepFor(action.isInteractive(), action.interactivePlaneScale());
     std::vector<SceneLight> lights;
     action.lightsInScope(lights);

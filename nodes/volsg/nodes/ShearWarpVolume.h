@@ -30,6 +30,11 @@ public:
     /// = interactiveSliceStep divided by the viewer's interactive plane scale (at most 16).
     /// SURFACE objects keep every slice. 1: full quality while interacting too.
     SFInt32 interactiveSliceStep{this, "interactiveSliceStep", 2};
+    /// Pure MIP scenes (every object MIP, MIP between them, nothing clipped, no opaque
+    /// geometry) draw value-sorted voxels onto their nearest pixel, with no maximum search.
+    /// FALSE: the general path, which resamples each slice bilinearly (slower, a little closer
+    /// to the reference).
+    SFBool valueSortedMip{this, "valueSortedMip", true};
     /// A compact voxel-list file (.vsgv, lib/volsg/voxelfile/README.md), "path" or "path#k"
     /// for its volume k: the objects' voxels come from it instead of the VolumeData in scope.
     SFString voxelFile{this, "voxelFile", ""};
