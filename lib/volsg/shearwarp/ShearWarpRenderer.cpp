@@ -367,7 +367,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     // --- Buffers -------------------------------------------------------------------------------
     const std::size_t pixels = std::size_t(W) * std::size_t(H);
     global_.assign(pixels, glm::vec4(0.0f));
-    if (!pureDvr) {
+    if (!pureDvr && !pureMip) { // the two-level buffers (the value-sorted MIP has its own)
         local_.assign(pixels, glm::vec4(0.0f));
         localValue_.assign(pixels, -1.0f);
         localDepth_.assign(pixels, 1.0f);

@@ -16,6 +16,23 @@ namespace {
 
 std::atomic<std::uint64_t> processBuilds{0}; // VoxelObject::processRenderListBuilds
 
+/// Stable counting sort of `order` by key(v) in [0, buckets); returns where each bucket
+/// starts in the sorted order (buckets + 1 entries, the last one order.size()).
+template <class Key>
+std::vector<std::uint32_t> countingSort(std::vector<std::uint32_t>& order, int buckets, Key key) {
+    std::vector<std::uint32_t> start(std::size_t(buckets) + 1, 0);
+    for (std::uint32_t v : order)
+        ++start[std::size_t(key(v)) + 1];
+    for (int i = 0; i < buckets; ++i)
+        start[std::size_t(i) + 1] += start[std::size_t(i)];
+    std::vector<std::uint32_t> at(start.begin(), start.end() - 1);
+    std::vector<std::uint32_t> sorted(order.size());
+    for (std::uint32_t v : order)
+        sorted[at[std::size_t(key(v))]++] = v;
+    order.swap(sorted);
+    return start;
+}
+
 /// Normalised value v of every voxel, and whether alpha(v) > 0; integer types go through a
 /// table over their raw values so the scan does no piecewise-linear search per voxel.
 struct Classifier {
@@ -201,19 +218,17 @@ const ValueSortedVoxels* VoxelObject::valueSorted() {
     if (!ValueSortedVoxels::fits(dimensions_)) return nullptr;
     std::lock_guard lock(buildMutex_);
     if (!valueSorted_) {
-        // A counting sort by value of the voxels in extraction order, which is (k, j, i).
+        // Sorted by value, stably: within a value in extraction order, which is (k, j, i).
         auto sorted = std::make_unique<ValueSortedVoxels>();
-        const std::size_t n = i_.size();
-        for (std::size_t v = 0; v < n; ++v)
-            ++sorted->start[std::size_t(std::min<unsigned>(value12_[v], 4095u)) + 1];
-        for (std::size_t m = 1; m < sorted->start.size(); ++m)
-            sorted->start[m] += sorted->start[m - 1];
-        std::array<std::uint32_t, 4096> next{};
-        std::copy(sorted->start.begin(), sorted->start.end() - 1, next.begin());
-        sorted->position.resize(n);
-        for (std::size_t v = 0; v < n; ++v)
-            sorted->position[next[std::min<unsigned>(value12_[v], 4095u)]++] =
-                ValueSortedVoxels::pack(i_[v], j_[v], k_[v]);
+        std::vector<std::uint32_t> order(i_.size());
+        for (std::size_t v = 0; v < order.size(); ++v)
+            order[v] = std::uint32_t(v);
+        const std::vector<std::uint32_t> start = countingSort(
+            order, 4096, [&](std::uint32_t v) { return std::min<unsigned>(value12_[v], 4095u); });
+        std::copy(start.begin(), start.end(), sorted->start.begin());
+        sorted->position.resize(order.size());
+        for (std::size_t i = 0; i < order.size(); ++i)
+            sorted->position[i] = ValueSortedVoxels::pack(i_[order[i]], j_[order[i]], k_[order[i]]);
         valueSorted_ = std::move(sorted);
     }
     return valueSorted_.get();
@@ -284,27 +299,17 @@ void VoxelObject::build(RenderList& list, int c) const {
     const std::size_t count = i_.size();
 
     // Stable counting sorts by a, then b, then (slice, piece a, piece b): order (c, piece, b, a).
-    std::vector<std::uint32_t> order(count), next(count);
+    std::vector<std::uint32_t> order(count);
     for (std::size_t i = 0; i < count; ++i)
         order[i] = std::uint32_t(i);
-    auto countingSort = [&](int buckets, auto key) {
-        std::vector<std::uint32_t> start(std::size_t(buckets) + 1, 0);
-        for (std::uint32_t v : order)
-            ++start[std::size_t(key(v)) + 1];
-        for (int i = 0; i < buckets; ++i)
-            start[std::size_t(i) + 1] += start[std::size_t(i)];
-        for (std::uint32_t v : order)
-            next[start[std::size_t(key(v))]++] = v;
-        order.swap(next);
-    };
     const int na = dimensions_[a], nb = dimensions_[b], nc = dimensions_[c];
     const int piecesA = (na + 255) / 256, piecesB = (nb + 255) / 256;
-    countingSort(na, [&](std::uint32_t v) { return ca[v]; });
-    countingSort(nb, [&](std::uint32_t v) { return cb[v]; });
+    countingSort(order, na, [&](std::uint32_t v) { return ca[v]; });
+    countingSort(order, nb, [&](std::uint32_t v) { return cb[v]; });
     auto groupOf = [&](std::uint32_t v) {
         return (int(cc[v]) * piecesA + (ca[v] >> 8)) * piecesB + (cb[v] >> 8);
     };
-    countingSort(nc * piecesA * piecesB, groupOf);
+    countingSort(order, nc * piecesA * piecesB, groupOf);
 
     list.axis = c;
     list.packed.resize(count);
