@@ -17,10 +17,8 @@ struct PackedVoxel {
     static constexpr unsigned b(std::uint32_t v) { return (v >> 8) & 0xFFu; }
     static constexpr unsigned main12(std::uint32_t v) { return (v >> 16) & 0xFFFu; }
     static constexpr unsigned second4(std::uint32_t v) { return v >> 28; }
-    /// The 16 attribute bits as one table index: second4 * 4096 + main12.
-    static constexpr unsigned attributes16(std::uint32_t v) {
-        return ((v >> 28) << 12) | ((v >> 16) & 0xFFFu);
-    }
+    /// The 16 attribute bits as one table index: second4 * 4096 + main12 (the top half).
+    static constexpr unsigned attributes16(std::uint32_t v) { return v >> 16; }
     /// Replaces the 16 attribute bits, keeping the position.
     static constexpr std::uint32_t withAttributes(std::uint32_t v, unsigned main12,
                                                   unsigned second4) {

@@ -33,25 +33,19 @@ std::int64_t threadCpuNs() {
     return std::int64_t(t.tv_sec) * 1000000000 + std::int64_t(t.tv_nsec);
 }
 
-/// CPU time of the helper threads parallelFor started (the calling thread measures its own).
+/// CPU time the pool's workers spent in renderer jobs (the calling thread measures its own).
 std::atomic<std::int64_t> helperCpuNs{0};
 
-template <class F> void parallelFor(int count, F body) {
-    if (count <= 1) {
-        body(0);
-        return;
-    }
-    std::vector<std::thread> threads;
-    threads.reserve(std::size_t(count - 1));
-    for (int i = 1; i < count; ++i)
-        threads.emplace_back([&body, i] {
-            const std::int64_t start = threadCpuNs();
-            body(i);
-            helperCpuNs += threadCpuNs() - start;
-        });
-    body(0);
-    for (auto& t : threads)
-        t.join();
+template <class F> void parallelFor(WorkerPool& pool, int count, F body) {
+    pool.run(count, [&body](int i) {
+        if (i == 0) {
+            body(0);
+            return;
+        }
+        const std::int64_t start = threadCpuNs();
+        body(i);
+        helperCpuNs += threadCpuNs() - start;
+    });
 }
 
 /// Four floats in one SSE/NEON register (GCC/Clang vector extension, no -march needed): the
@@ -216,9 +210,11 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     frame.pickObject = std::move(spare_.pickObject); // refilled below (capacity kept)
     frame.pickSlice = std::move(spare_.pickSlice);
     spare_ = ShearWarpFrame();
-    frame.pickObject.clear();
-    frame.pickSlice.clear();
-    if (objects.empty()) return frame;
+    if (objects.empty()) {
+        frame.pickObject.clear();
+        frame.pickSlice.clear();
+        return frame;
+    }
     for (const auto& o : objects)
         if (!o.object) throw Error("shear-warp: object without voxels");
     const VoxelObject& first = *objects.front().object;
@@ -364,39 +360,59 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         }
     frame.stats.valueSortedMip = pureMip;
 
-    // --- Buffers -------------------------------------------------------------------------------
+    // --- Buffers ---------------------------------------------------------------------------
+    // Sized here (never shrunk, so a size change fills nothing serially); each band's thread
+    // clears its own rows (initRows), in parallel and into its own cache.
     const std::size_t pixels = std::size_t(W) * std::size_t(H);
-    global_.assign(pixels, glm::vec4(0.0f));
-    if (!pureDvr && !pureMip) { // the two-level buffers (the value-sorted MIP has its own)
-        local_.assign(pixels, glm::vec4(0.0f));
-        localValue_.assign(pixels, -1.0f);
-        localDepth_.assign(pixels, 1.0f);
-        localObject_.assign(pixels, std::int16_t(-1));
-    }
-    bool anySurface = false; // depth is written only by Surface objects
+    const bool twoLevel = !pureDvr && !pureMip; // the value-sorted MIP has its own buffers
+    bool anySurface = false;                    // depth is written only by Surface objects
     for (const FrameObject& f : fo)
         anySurface = anySurface || f.source->compositing == ObjectCompositing::Surface;
-    if (anySurface) hitDepth_.assign(pixels, 1.0f);
-    if (pureDvr) {
-        nextOpen_.resize(pixels);
-        opaqueCount_.assign(std::size_t(H), 0);
-        for (std::size_t v = 0; v < std::size_t(H); ++v) {
-            std::int32_t* row = nextOpen_.data() + v * std::size_t(W);
-            for (int u = 0; u < W; ++u)
-                row[u] = u;
-        }
-    }
-    frame.pickObject.assign(pixels, std::int16_t(-1));
-    frame.pickSlice.assign(pixels, 0.0f);
     const bool hasLimit = !view.opaqueWindowDepth.empty();
-    if (hasLimit) {
-        if (view.opaqueWindowDepth.size() != std::size_t(view.width) * std::size_t(view.height))
-            throw Error("shear-warp: opaque depth buffer of the wrong size");
-        // Per intermediate pixel: a sample at slice k is in front of the opaque surface when
-        // zk * k > limit (eye z grows towards the viewer).
-        limit_.assign(pixels, -std::numeric_limits<float>::infinity());
-        for (int v = 0; v < H; ++v)
+    if (hasLimit &&
+        view.opaqueWindowDepth.size() != std::size_t(view.width) * std::size_t(view.height))
+        throw Error("shear-warp: opaque depth buffer of the wrong size");
+    auto ensure = [pixels](auto& buffer) {
+        if (buffer.size() < pixels) buffer.resize(pixels);
+    };
+    ensure(global_);
+    if (twoLevel) {
+        ensure(local_);
+        ensure(localValue_);
+        ensure(localDepth_);
+        ensure(localObject_);
+    }
+    if (anySurface) ensure(hitDepth_);
+    if (pureDvr) {
+        ensure(nextOpen_);
+        opaqueCount_.assign(std::size_t(H), 0);
+    }
+    if (hasLimit) ensure(limit_);
+    frame.pickObject.resize(pixels);
+    frame.pickSlice.resize(pixels);
+    auto initRows = [&](int r0, int r1) {
+        const auto p0 = std::ptrdiff_t(r0) * W, p1 = std::ptrdiff_t(r1) * W;
+        std::fill(global_.begin() + p0, global_.begin() + p1, glm::vec4(0.0f));
+        if (twoLevel) {
+            std::fill(local_.begin() + p0, local_.begin() + p1, glm::vec4(0.0f));
+            std::fill(localValue_.begin() + p0, localValue_.begin() + p1, -1.0f);
+            std::fill(localDepth_.begin() + p0, localDepth_.begin() + p1, 1.0f);
+            std::fill(localObject_.begin() + p0, localObject_.begin() + p1, std::int16_t(-1));
+        }
+        if (anySurface) std::fill(hitDepth_.begin() + p0, hitDepth_.begin() + p1, 1.0f);
+        std::fill(frame.pickObject.begin() + p0, frame.pickObject.begin() + p1, std::int16_t(-1));
+        std::fill(frame.pickSlice.begin() + p0, frame.pickSlice.begin() + p1, 0.0f);
+        for (int v = r0; v < r1; ++v) {
+            const std::size_t row = std::size_t(v) * std::size_t(W);
+            if (pureDvr)
+                for (int u = 0; u < W; ++u)
+                    nextOpen_[row + std::size_t(u)] = u;
+            if (!hasLimit) continue;
+            // Per intermediate pixel: a sample at slice k is in front of the opaque surface
+            // when zk * k > limit (eye z grows towards the viewer).
             for (int u = 0; u < W; ++u) {
+                float& limit = limit_[row + std::size_t(u)];
+                limit = -std::numeric_limits<float>::infinity();
                 const glm::dvec3 px = warp * glm::dvec3(u, v, 1.0);
                 const int x = int(std::lround(px.x)), y = int(std::lround(px.y));
                 if (x < 0 || y < 0 || x >= view.width || y >= view.height) continue;
@@ -404,10 +420,10 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                                        std::size_t(x)];
                 if (d >= 1.0f) continue;
                 const double zOpaque = ((2.0 * d - 1.0) - P[3][2]) / P[2][2];
-                limit_[std::size_t(v) * std::size_t(W) + std::size_t(u)] =
-                    float(zOpaque - (z0 + zu * u + zv * v));
+                limit = float(zOpaque - (z0 + zu * u + zv * v));
             }
-    }
+        }
+    };
 
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     const int threads =
@@ -451,6 +467,8 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         const std::uint32_t masks[3] = {(1u << ValueSortedVoxels::kBitsI) - 1,
                                         (1u << ValueSortedVoxels::kBitsJ) - 1,
                                         (1u << ValueSortedVoxels::kBitsK) - 1};
+        parallelFor(*pool_, threads,
+                    [&](int t) { initRows(H * t / threads, H * (t + 1) / threads); });
         mipValue_.resize(std::size_t(threads));
         mipSlice_.resize(std::size_t(threads));
         for (std::size_t oi = 0; oi < fo.size(); ++oi) {
@@ -469,7 +487,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
             const std::uint32_t end = sorted.start[4096];
             // Each thread a run of the order, into its own buffers: later runs hold larger
             // values, so the merge takes the last thread that wrote a pixel.
-            parallelFor(threads, [&](int t) {
+            parallelFor(*pool_, threads, [&](int t) {
                 std::vector<std::uint16_t>& value = mipValue_[std::size_t(t)];
                 std::vector<std::uint16_t>& slice = mipSlice_[std::size_t(t)];
                 value.assign(pixels, 0);
@@ -510,7 +528,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
             for (BandScratch& s : bands_)
                 frame.stats.voxelsTouched += std::exchange(s.voxels, 0);
             // Merge by rows: the object's layer C(v) A(v), MIP with what is there.
-            parallelFor(threads, [&](int t) {
+            parallelFor(*pool_, threads, [&](int t) {
                 const std::size_t p0 = std::size_t(H * t / threads) * std::size_t(W);
                 const std::size_t p1 = std::size_t(H * (t + 1) / threads) * std::size_t(W);
                 for (std::size_t p = p0; p < p1; ++p) {
@@ -535,11 +553,12 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         for (BandScratch& s : bands_)
             s.hidden = s.entries = 0; // (voxels counted above)
     }
-    parallelFor(pureMip ? 1 : threads, [&](int t) {
+    parallelFor(*pool_, pureMip ? 1 : threads, [&](int t) {
         if (pureMip) return; // drawn above
         BandScratch& s = bands_[std::size_t(t)];
         const int r0 = H * t / threads, r1 = H * (t + 1) / threads;
         const int bandRows = r1 - r0;
+        initRows(r0, r1);
         glm::ivec4 touched(W, H, 0, 0);
         auto touch = [&touched](int row, int lo, int hi) {
             touched = glm::ivec4(std::min(touched.x, lo), std::min(touched.y, row),
@@ -821,8 +840,9 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                 glm::vec4* const line = cur.px;
                                 const int cb = colBase;
                                 const unsigned ea0 = edgeA0, ea1 = edgeA1;
-                                const float ew0 = edgeA0Weight, ew1 = edgeA1Weight;
-                                const float left = 1.0f - fu, right = fu;
+                                const float ew0 = edgeA0Weight, ew1 = edgeA1Weight; // broadcast:
+                                const V4 left = V4{} + (1.0f - fu), right = V4{} + fu;
+                                const V4 edge0 = V4{} + ew0, edge1 = V4{} + ew1;
                                 V4 pending{};
                                 int pendingCol = -2;
                                 int firstCol = std::numeric_limits<int>::max(), lastCol = -1;
@@ -865,8 +885,8 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                             visibleThrough = col;
                                         }
                                     }
-                                    const float w0 = va == ea0 ? ew0 : left;
-                                    const float w1 = va == ea1 ? ew1 : right;
+                                    const V4 w0 = va == ea0 ? edge0 : left;
+                                    const V4 w1 = va == ea1 ? edge1 : right;
                                     firstCol = std::min(firstCol, col);
                                     lastCol = col;
                                     if constexpr (fresh) {
@@ -966,7 +986,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     std::vector<glm::ivec4> drawnRows(std::size_t(outThreads),
                                       glm::ivec4(view.width, view.height, 0, 0));
     if (box.x < box.z && box.y < box.w)
-        parallelFor(outThreads, [&](int t) {
+        parallelFor(*pool_, outThreads, [&](int t) {
             const int y0 = view.height * t / outThreads, y1 = view.height * (t + 1) / outThreads;
             const glm::vec4* image = global_.data();
             glm::ivec4& drawn = drawnRows[std::size_t(t)];

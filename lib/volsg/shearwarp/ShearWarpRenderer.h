@@ -2,11 +2,13 @@
 // The shear-warp renderer of RenderLists (Lacroute & Levoy 1994; RTVR section 3.4).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include <volsg/core/WorkerPool.h>
 #include <volsg/image/Image.h>
 #include <volsg/shearwarp/ShearWarpScene.h>
 
@@ -104,7 +106,8 @@ private:
     std::vector<BandScratch> bands_;
     /// Pure MIP: per thread, the largest value + 1 (0: none) and its slice per pixel.
     std::vector<std::vector<std::uint16_t>> mipValue_, mipSlice_;
-    ShearWarpFrame spare_; ///< recycled buffers
+    ShearWarpFrame spare_;                                              ///< recycled buffers
+    std::unique_ptr<WorkerPool> pool_ = std::make_unique<WorkerPool>(); ///< the frame's threads
 };
 
 } // namespace volsg
