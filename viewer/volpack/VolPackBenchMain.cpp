@@ -58,7 +58,7 @@ const char* usage =
     "usage: volsg-volpack-bench [--case sphere|ml|ml-shaded|all] [--size N] [--frames N]\n"
     "                           [--frame K] [--out DIR] [--reference [--tolerance T]]\n"
     "                           [--max-ray-opacity X] [--no-pixel-shift] [--side N]\n"
-    "                           [--shearwarp]\n"
+    "                           [--shearwarp [--slice-step N]]\n"
     "       volsg-volpack-bench --compare IMAGE.pfm REFERENCE.pfm\n"
     "  Renders each case with VolPack at NxN (default 512) over N rotating orthographic views\n"
     "  (default 20, after one warm-up frame), the views volsg-bench makes from the scene file it\n"
@@ -73,6 +73,8 @@ const char* usage =
     "                errors; for the node: the whole frame (GL side and the image read back\n"
     "                included), the process CPU per frame, and the engine alone\n"
     "                (ShearWarpRenderer::render: wall time and CPU summed over its threads)\n"
+    "  --slice-step  the node composites every N-th slice (opacity-corrected; its interactive\n"
+    "                setting, interactiveSliceStep N), for a comparison at equal error\n"
     "  --compare     prints RMSE, PSNR and max abs error (RGB) of one PFM against another\n"
     "  cases: sphere     soft sphere 256^3, 1.4M voxels visible (8%), grey DVR, unshaded\n"
     "         ml         Marschner-Lobb 256^3, smooth colour transfer function, unshaded\n"
@@ -90,6 +92,7 @@ struct Settings {
     double maxRayOpacity = 1.0;
     bool pixelShift = true;
     bool shearWarp = false;
+    int sliceStep = 1; ///< the node's slice step (1: full quality, a still frame)
 };
 
 struct Case {
@@ -208,8 +211,9 @@ void runCase(const Case& c, const Settings& st) {
         std::string text = c.sceneText;
         const std::string volumeNode = "  Volume { }\n";
         text.replace(text.find(volumeNode), volumeNode.size(),
-                     "  ShearWarpVolume { VolumeObject { source WHOLE voxels VISIBLE renderMode TF "
-                     "compositing DVR } }\n");
+                     "  ShearWarpVolume { interactiveSliceStep " + std::to_string(st.sliceStep) +
+                         " VolumeObject { source WHOLE voxels VISIBLE renderMode TF "
+                         "compositing DVR } }\n");
         const std::filesystem::path swPath = st.out / ("shearwarp-" + c.name + ".iv");
         std::ofstream(swPath) << text;
         swRoot = readScene(swPath.string());
@@ -221,6 +225,7 @@ void runCase(const Case& c, const Settings& st) {
     auto renderShearWarp = [&](int view) {
         RenderOptions o = options;
         o.camera = views.cameras[std::size_t(view)];
+        o.interactive = st.sliceStep > 1; // the node's interactiveSliceStep is the step
         return glRenderer->render(*swRoot, o);
     };
 
@@ -269,7 +274,10 @@ void runCase(const Case& c, const Settings& st) {
         const auto ratio = [](double volpack, double ours) {
             return volpack / std::max(ours, 1e-9);
         };
-        row("ShearWarpVolume, same views", swSamples,
+        const std::string label =
+            st.sliceStep > 1 ? "ShearWarpVolume, slice step " + std::to_string(st.sliceStep)
+                             : std::string("ShearWarpVolume, same views");
+        row(label.c_str(), swSamples,
             format("  (VolPack / ShearWarpVolume: %.2f)",
                    ratio(samples.median(), swSamples.median())));
         row("", swCpuSamples, " of process CPU time (every thread)");
@@ -336,6 +344,8 @@ int run(int argc, char** argv) {
             st.reference = true;
         else if (a == "--tolerance")
             st.tolerance = std::stod(args.value(a));
+        else if (a == "--slice-step")
+            st.sliceStep = std::clamp(std::stoi(args.value(a)), 1, 16);
         else if (a == "--max-ray-opacity")
             st.maxRayOpacity = std::stod(args.value(a));
         else if (a == "--no-pixel-shift")
