@@ -122,6 +122,55 @@ glm::vec4 mipLookup(const std::vector<glm::vec4>& table, float value) {
     return table[std::size_t(i)] * (1.0f - f) + table[std::size_t(i) + 1] * f;
 }
 
+/// One intermediate row of a pure DVR frame, composited front to back ("under").
+struct UnderRow {
+    glm::vec4* pixels;
+    std::int16_t* pickObject;
+    float* pickSlice;
+    std::int32_t* open; ///< opaque-pixel links
+    const float* limit; ///< null: no opaque geometry
+    int* opaqueCount;   ///< the row's stopped pixels
+    std::int16_t object;
+    float slice, zSlice;
+};
+
+/// Composites the resampled samples wa * a[c] + wb * b[c] (line a or b absent as the template
+/// says) over columns [lo, hi) and clears line b. A function of its own (not inlined into the
+/// band loop) so the compiler keeps the loop's values in registers: inlined, it went through
+/// the stack for every pixel.
+template <bool HasA, bool HasB>
+[[gnu::noinline]] void compositeUnder(const UnderRow& row, const glm::vec4* a, float wa,
+                                      glm::vec4* b, float wb, int lo, int hi) {
+    glm::vec4* const g = row.pixels;
+    const float* const limit = row.limit;
+    const float zSlice = row.zSlice;
+    for (int c = lo; c < hi; ++c) {
+        V4 sample;
+        if constexpr (HasA && HasB) {
+            sample = wa * loadV4(a[c]) + wb * loadV4(b[c]);
+            storeV4(b[c], V4{});
+        } else if constexpr (HasA) {
+            sample = wa * loadV4(a[c]);
+        } else {
+            sample = wb * loadV4(b[c]);
+            storeV4(b[c], V4{});
+        }
+        const float alpha = g[c].w; // a load of its own: from the vector GCC went via the stack
+        if (sample[3] <= 0.0f || alpha >= kOpaque) continue;
+        if (limit && !(zSlice > limit[c])) continue; // behind geometry
+        const V4 gc = loadV4(g[c]) + (1.0f - alpha) * sample;
+        storeV4(g[c], gc);
+        if (sample[3] >= kPickAlpha && row.pickObject[c] < 0) {
+            row.pickObject[c] = row.object;
+            row.pickSlice[c] = row.slice;
+        }
+        if (gc[3] >= kOpaque) { // terminated
+            row.open[c] = c + 1;
+            ++*row.opaqueCount;
+        }
+    }
+}
+
 } // namespace
 
 void ShearWarpRenderer::prepare(ShearWarpObject& o, RenderList& list) {
@@ -747,39 +796,21 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                             float* pickSlice = frame.pickSlice.data() + rowStart;
                             std::int32_t* open = nextOpen_.data() + rowStart;
                             const float* limit = hasLimit ? limit_.data() + rowStart : nullptr;
-                            auto composite = [&](auto sampleOf) {
-                                for (int c = lo; c < hi; ++c) {
-                                    const V4 sample = sampleOf(c);
-                                    V4 gc = loadV4(g[c]);
-                                    if (sample[3] <= 0.0f || gc[3] >= kOpaque) continue;
-                                    if (limit && !(zSlice > limit[c])) continue; // behind geometry
-                                    gc += (1.0f - gc[3]) * sample;
-                                    storeV4(g[c], gc);
-                                    if (sample[3] >= kPickAlpha && pickObject[c] < 0) {
-                                        pickObject[c] = std::int16_t(oi);
-                                        pickSlice[c] = float(k);
-                                    }
-                                    if (gc[3] >= kOpaque) { // terminated
-                                        open[c] = c + 1;
-                                        ++opaqueCount_[std::size_t(row + r0)];
-                                    }
-                                }
-                            };
-                            // One loop per line combination (the branches leave the loop).
+                            const UnderRow target{g,
+                                                  pickObject,
+                                                  pickSlice,
+                                                  open,
+                                                  limit,
+                                                  &opaqueCount_[std::size_t(row + r0)],
+                                                  std::int16_t(oi),
+                                                  float(k),
+                                                  zSlice};
                             if (pa && pb)
-                                composite([&](int c) {
-                                    const V4 sample = wa * loadV4(pa[c]) + wb * loadV4(pb[c]);
-                                    storeV4(pb[c], V4{});
-                                    return sample;
-                                });
+                                compositeUnder<true, true>(target, pa, wa, pb, wb, lo, hi);
                             else if (pa)
-                                composite([&](int c) { return wa * loadV4(pa[c]); });
+                                compositeUnder<true, false>(target, pa, wa, pb, wb, lo, hi);
                             else
-                                composite([&](int c) {
-                                    const V4 sample = wb * loadV4(pb[c]);
-                                    storeV4(pb[c], V4{});
-                                    return sample;
-                                });
+                                compositeUnder<false, true>(target, pa, wa, pb, wb, lo, hi);
                             return;
                         }
                         for (int c = lo; c < hi; ++c) {
@@ -843,6 +874,13 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                 const float ew0 = edgeA0Weight, ew1 = edgeA1Weight; // broadcast:
                                 const V4 left = V4{} + (1.0f - fu), right = V4{} + fu;
                                 const V4 edge0 = V4{} + ew0, edge1 = V4{} + ew1;
+                                // Voxels with innerLo <= a <= innerLo + innerSpan are no face's.
+                                const int lowest = ea0 == 0 ? 1 : 0;
+                                const int highest = ea1 < 256u ? int(ea1) - 1 : 255;
+                                const unsigned innerLo =
+                                    highest >= lowest ? unsigned(lowest) : 512u;
+                                const unsigned innerSpan =
+                                    highest >= lowest ? unsigned(highest - lowest) : 0u;
                                 V4 pending{};
                                 int pendingCol = -2;
                                 int firstCol = std::numeric_limits<int>::max(), lastCol = -1;
@@ -885,25 +923,36 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                             visibleThrough = col;
                                         }
                                     }
-                                    const V4 w0 = va == ea0 ? edge0 : left;
-                                    const V4 w1 = va == ea1 ? edge1 : right;
-                                    firstCol = std::min(firstCol, col);
-                                    lastCol = col;
+                                    // Its shares of the two columns; face voxels (only
+                                    // a row's first or last: sorted by a) weigh their own.
+                                    V4 share0 = left * colour, share1 = right * colour;
+                                    if (va - innerLo > innerSpan) [[unlikely]] {
+                                        if (va == ea0) share0 = edge0 * colour;
+                                        if (va == ea1) share1 = edge1 * colour;
+                                    }
                                     if constexpr (fresh) {
                                         if (col == pendingCol) {
-                                            storeV4(line[col], pending + w0 * colour);
+                                            storeV4(line[col], pending + share0);
                                         } else {
-                                            if (pendingCol >= 0) storeV4(line[pendingCol], pending);
-                                            storeV4(line[col], w0 * colour);
+                                            if (pendingCol >= 0)
+                                                storeV4(line[pendingCol], pending);
+                                            else
+                                                firstCol = col; // ascending: the row's first
+                                            storeV4(line[col], share0);
                                         }
-                                        pending = w1 * colour;
+                                        pending = share1;
                                         pendingCol = col + 1;
                                     } else {
-                                        storeV4(line[col], loadV4(line[col]) + w0 * colour);
-                                        storeV4(line[col + 1], loadV4(line[col + 1]) + w1 * colour);
+                                        firstCol = std::min(firstCol, col);
+                                        lastCol = col;
+                                        storeV4(line[col], loadV4(line[col]) + share0);
+                                        storeV4(line[col + 1], loadV4(line[col + 1]) + share1);
                                     }
                                 }
-                                if (pendingCol >= 0) storeV4(line[pendingCol], pending);
+                                if (pendingCol >= 0) {
+                                    storeV4(line[pendingCol], pending);
+                                    lastCol = pendingCol - 1;
+                                }
                                 if (lastCol >= 0) {
                                     cur.lo = std::min(cur.lo, firstCol);
                                     cur.hi = std::max(cur.hi, lastCol + 2);
