@@ -885,10 +885,12 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                 int pendingCol = -2;
                                 int firstCol = std::numeric_limits<int>::max(), lastCol = -1;
                                 std::uint32_t i = at[part];
-                                const std::uint32_t stop = end[part];
+                                // Row b ends within 256 voxels (one per a): found once, not
+                                // tested per voxel.
+                                const std::uint32_t stop =
+                                    lowerRow(pk, i, std::min(end[part], i + 256u), int(b) + 1);
                                 for (; i < stop; ++i) {
                                     const std::uint32_t v = pk[i];
-                                    if (PackedVoxel::b(v) != b) break;
                                     V4 colour;
                                     if constexpr (kind == 0)
                                         colour = V4{float(values[i]) * (1.0f / 4095.0f), 0.0f, 0.0f,
