@@ -1,6 +1,24 @@
 #include <volsg/core/WorkerPool.h>
 
+#include <chrono>
+
 namespace volsg {
+
+namespace {
+
+/// How long a thread spins for the next job or the end of this one before it sleeps.
+constexpr auto kSpin = std::chrono::microseconds(200);
+
+/// Spins until done() or kSpin has passed; true when done() held.
+template <class Done> bool spinUntil(Done done) {
+    const auto until = std::chrono::steady_clock::now() + kSpin;
+    for (int i = 0;; ++i) {
+        if (done()) return true;
+        if ((i & 63) == 63 && std::chrono::steady_clock::now() > until) return false;
+    }
+}
+
+} // namespace
 
 WorkerPool::~WorkerPool() {
     {
@@ -36,8 +54,9 @@ void WorkerPool::run(int count, const std::function<void(int)>& body) {
     } catch (...) {
         callerError = std::current_exception();
     }
+    spinUntil([this] { return running_.load() == 0; });
     std::unique_lock<std::mutex> lock(mutex_);
-    finished_.wait(lock, [this] { return running_ == 0; });
+    finished_.wait(lock, [this] { return running_.load() == 0; });
     body_ = nullptr;
     if (callerError) std::rethrow_exception(callerError);
     if (error_) std::rethrow_exception(error_);
@@ -47,7 +66,12 @@ void WorkerPool::work(int index) {
     std::uint64_t seen = 0;
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
-        wake_.wait(lock, [&] { return stop_ || job_ != seen; });
+        if (!stop_ && job_.load() == seen) {
+            lock.unlock();
+            spinUntil([&] { return job_.load() != seen; });
+            lock.lock();
+        }
+        wake_.wait(lock, [&] { return stop_ || job_.load() != seen; });
         if (stop_) return;
         seen = job_;
         if (index >= count_) continue; // a job with fewer indices: not counted in running_

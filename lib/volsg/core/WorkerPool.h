@@ -1,6 +1,7 @@
 #pragma once
 // Threads kept between parallel jobs (a renderer runs two or three jobs a frame).
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -15,6 +16,8 @@ namespace volsg {
 /// workers the pool keeps (started on first need). Starting a thread per job cost about 0.1 ms
 /// a frame on the shared 2-core machine; waking a kept one costs a few microseconds. One job at
 /// a time (run() is not reentrant); the first exception a body throws is rethrown by run().
+/// Between jobs a worker spins for a moment before it sleeps, and so does the caller waiting
+/// for the workers: a renderer's jobs come microseconds apart, and a futex wake-up costs tens.
 class WorkerPool {
 public:
     WorkerPool() = default;
@@ -32,8 +35,8 @@ private:
     std::vector<std::thread> workers_; ///< worker i runs index i + 1
     const std::function<void(int)>* body_ = nullptr;
     int count_ = 0;
-    int running_ = 0; ///< workers still in the current job
-    std::uint64_t job_ = 0;
+    std::atomic<int> running_{0}; ///< workers still in the current job
+    std::atomic<std::uint64_t> job_{0};
     bool stop_ = false;
     std::exception_ptr error_;
 };
