@@ -900,7 +900,10 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                     else
                                         colour = loadV4(rgba[(PackedVoxel::second4(v) << 8) |
                                                              lut2[PackedVoxel::main12(v)]]);
-                                    if (colour[3] <= 0.0f) continue;
+                                    // A transparent voxel adds zero shares: only the
+                                    // accumulating part and hidden-voxel skipping (its range
+                                    // must not grow) need to leave it out.
+                                    if ((!fresh || ert) && colour[3] <= 0.0f) continue;
                                     const unsigned va = PackedVoxel::a(v);
                                     const int col = int(va) + cb;
                                     if constexpr (ert) { // skip hidden voxels
