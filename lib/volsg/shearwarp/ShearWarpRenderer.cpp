@@ -156,17 +156,22 @@ template <bool HasA, bool HasB>
             storeV4(b[c], V4{});
         }
         const float alpha = g[c].w; // a load of its own: from the vector GCC went via the stack
-        if (sample[3] <= 0.0f || alpha >= kOpaque) continue;
+        if (alpha >= kOpaque) {
+            // Terminated (by an earlier slice): linked the first time it is met here, off the
+            // path of the pixels still open.
+            if (row.open[c] == c) {
+                row.open[c] = c + 1;
+                ++*row.opaqueCount;
+            }
+            continue;
+        }
+        if (sample[3] <= 0.0f) continue;
         if (limit && !(zSlice > limit[c])) continue; // behind geometry
         const V4 gc = loadV4(g[c]) + (1.0f - alpha) * sample;
         storeV4(g[c], gc);
         if (sample[3] >= kPickAlpha && row.pickObject[c] < 0) {
             row.pickObject[c] = row.object;
             row.pickSlice[c] = row.slice;
-        }
-        if (gc[3] >= kOpaque) { // terminated
-            row.open[c] = c + 1;
-            ++*row.opaqueCount;
         }
     }
 }
