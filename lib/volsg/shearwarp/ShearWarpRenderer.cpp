@@ -115,6 +115,18 @@ std::uint32_t lowerRow(const std::uint32_t* packed, std::uint32_t begin, std::ui
         packed);
 }
 
+/// The end of voxel row b that starts at `begin` (voxels sorted by b; the row ends by
+/// `limit`): `guess` voxels on when that holds, as it mostly does for the previous row's
+/// length, else a binary search.
+std::uint32_t rowEnd(const std::uint32_t* packed, std::uint32_t begin, std::uint32_t limit,
+                     unsigned b, std::uint32_t guess) {
+    const std::uint32_t e = begin + guess;
+    if (guess > 0 && e <= limit && PackedVoxel::b(packed[e - 1]) == b &&
+        (e == limit || PackedVoxel::b(packed[e]) != b))
+        return e;
+    return lowerRow(packed, begin, limit, int(b) + 1);
+}
+
 glm::vec4 mipLookup(const std::vector<glm::vec4>& table, float value) {
     const float x = std::clamp(value, 0.0f, 1.0f) * 4095.0f;
     const int i = std::min(int(x), 4094);
@@ -739,6 +751,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                     // The drawn parts, restricted to the voxel rows whose two intermediate
                     // rows (row, row + 1) meet the band.
                     std::uint32_t at[2] = {0, 0}, end[2] = {0, 0};
+                    std::uint32_t rowLength[2] = {0, 0}; // of each part's last row drawn
                     const std::uint32_t ranges[2][2] = {{e.first, e.last},
                                                         {e.firstClipped, e.lastClipped}};
                     for (int part = 0; part < 2; ++part) {
@@ -891,9 +904,10 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                 int firstCol = std::numeric_limits<int>::max(), lastCol = -1;
                                 std::uint32_t i = at[part];
                                 // Row b ends within 256 voxels (one per a): found once, not
-                                // tested per voxel.
-                                const std::uint32_t stop =
-                                    lowerRow(pk, i, std::min(end[part], i + 256u), int(b) + 1);
+                                // tested per voxel; neighbouring rows are mostly as long.
+                                const std::uint32_t stop = rowEnd(
+                                    pk, i, std::min(end[part], i + 256u), b, rowLength[part]);
+                                rowLength[part] = stop - i;
                                 for (; i < stop; ++i) {
                                     const std::uint32_t v = pk[i];
                                     V4 colour;
