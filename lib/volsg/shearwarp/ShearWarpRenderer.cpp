@@ -150,12 +150,17 @@ struct UnderRow {
 /// says) over columns [lo, hi) and clears line b. A function of its own (not inlined into the
 /// band loop) so the compiler keeps the loop's values in registers: inlined, it went through
 /// the stack for every pixel.
-template <bool HasA, bool HasB>
+template <bool HasA, bool HasB, bool HasLimit>
 [[gnu::noinline]] void compositeUnder(const UnderRow& row, const glm::vec4* a, float wa,
                                       glm::vec4* b, float wb, int lo, int hi) {
+    // Locals: read through `row` the pointers were reloaded after every store.
     glm::vec4* const g = row.pixels;
+    std::int16_t* const pickObject = row.pickObject;
+    float* const pickSlice = row.pickSlice;
     const float* const limit = row.limit;
     const float zSlice = row.zSlice;
+    const std::int16_t object = row.object;
+    const float slice = row.slice;
     for (int c = lo; c < hi; ++c) {
         V4 sample;
         if constexpr (HasA && HasB) {
@@ -178,12 +183,12 @@ template <bool HasA, bool HasB>
             continue;
         }
         if (sample[3] <= 0.0f) continue;
-        if (limit && !(zSlice > limit[c])) continue; // behind geometry
+        if (HasLimit && !(zSlice > limit[c])) continue; // behind geometry
         const V4 gc = loadV4(g[c]) + (1.0f - alpha) * sample;
         storeV4(g[c], gc);
-        if (sample[3] >= kPickAlpha && row.pickObject[c] < 0) {
-            row.pickObject[c] = row.object;
-            row.pickSlice[c] = row.slice;
+        if (sample[3] >= kPickAlpha && pickObject[c] < 0) {
+            pickObject[c] = object;
+            pickSlice[c] = slice;
         }
     }
 }
@@ -823,12 +828,22 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                                   std::int16_t(oi),
                                                   float(k),
                                                   zSlice};
+                            auto under = [&](auto hasA, auto hasB) {
+                                constexpr bool withA = decltype(hasA)::value;
+                                constexpr bool withB = decltype(hasB)::value;
+                                if (limit)
+                                    compositeUnder<withA, withB, true>(target, pa, wa, pb, wb, lo,
+                                                                       hi);
+                                else
+                                    compositeUnder<withA, withB, false>(target, pa, wa, pb, wb, lo,
+                                                                        hi);
+                            };
                             if (pa && pb)
-                                compositeUnder<true, true>(target, pa, wa, pb, wb, lo, hi);
+                                under(std::true_type{}, std::true_type{});
                             else if (pa)
-                                compositeUnder<true, false>(target, pa, wa, pb, wb, lo, hi);
+                                under(std::true_type{}, std::false_type{});
                             else
-                                compositeUnder<false, true>(target, pa, wa, pb, wb, lo, hi);
+                                under(std::false_type{}, std::true_type{});
                             return;
                         }
                         for (int c = lo; c < hi; ++c) {
