@@ -72,8 +72,9 @@ struct ShearWarpPick {
 /// buffers of their own, merged by maximum. The resampling is nearest-pixel where the general
 /// path interpolates each slice bilinearly (errors in README.md).
 ///
-/// Threads take bands of intermediate rows (voxels of a drawn range are sorted by row, so a
-/// band is a binary search away) and then bands of output rows. The RenderLists are locked
+/// Threads take bands of intermediate rows from a counter, three bands per thread (voxels of a
+/// drawn range are sorted by row, so a band is a binary search away), and then bands of output
+/// rows; they are kept in a WorkerPool between jobs. The RenderLists are locked
 /// for the frame. Throws Error for a perspective projection.
 class ShearWarpRenderer {
 public:
