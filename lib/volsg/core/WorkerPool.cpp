@@ -14,6 +14,9 @@ template <class Done> bool spinUntil(Done done) {
     const auto until = std::chrono::steady_clock::now() + kSpin;
     for (int i = 0;; ++i) {
         if (done()) return true;
+#if defined(__x86_64__) || defined(__i386__)
+        __builtin_ia32_pause(); // tells the core it is a spin loop
+#endif
         if ((i & 63) == 63 && std::chrono::steady_clock::now() > until) return false;
     }
 }

@@ -672,17 +672,10 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                     const std::uint32_t* packed = list.packed.data();
                     const std::uint16_t* values = list.value12.data();
 
-                    // One resampled sample of this object's slice composited at band pixel p.
+                    // One resampled sample of this object's slice composited at band pixel p
+                    // (two-level compositing; pure DVR has compositeUnder).
                     auto compositePixel = [&](std::size_t p, const glm::vec4& sample) {
                         if (hasLimit && !(zSlice > limit_[p])) return; // behind opaque geometry
-                        if (pureDvr) {
-                            global_[p] = sample + (1.0f - sample.w) * global_[p];
-                            if (sample.w >= kPickAlpha) {
-                                frame.pickObject[p] = std::int16_t(oi);
-                                frame.pickSlice[p] = float(k);
-                            }
-                            return;
-                        }
                         if (localObject_[p] != std::int16_t(oi)) {
                             flush(p);
                             localObject_[p] = std::int16_t(oi);
@@ -827,17 +820,12 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                 storeV4(pb[c], V4{});
                                 return sample;
                             };
-                            if (pureDvr) { // the hot path: front to back ("under"), inlined
-                                glm::vec4* g = global_.data() + rowStart;
-                                std::int16_t* pickObject = frame.pickObject.data() + rowStart;
-                                float* pickSlice = frame.pickSlice.data() + rowStart;
-                                std::int32_t* open = nextOpen_.data() + rowStart;
-                                const float* limit = hasLimit ? limit_.data() + rowStart : nullptr;
-                                const UnderRow target{g,
-                                                      pickObject,
-                                                      pickSlice,
-                                                      open,
-                                                      limit,
+                            if (pureDvr) { // the hot path: front to back ("under")
+                                const UnderRow target{global_.data() + rowStart,
+                                                      frame.pickObject.data() + rowStart,
+                                                      frame.pickSlice.data() + rowStart,
+                                                      nextOpen_.data() + rowStart,
+                                                      hasLimit ? limit_.data() + rowStart : nullptr,
                                                       &opaqueCount_[std::size_t(row + r0)],
                                                       std::int16_t(oi),
                                                       float(k),
@@ -845,7 +833,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                 auto under = [&](auto hasA, auto hasB) {
                                     constexpr bool withA = decltype(hasA)::value;
                                     constexpr bool withB = decltype(hasB)::value;
-                                    if (limit)
+                                    if (hasLimit)
                                         compositeUnder<withA, withB, true>(target, pa, wa, pb, wb,
                                                                            lo, hi);
                                     else
