@@ -147,6 +147,33 @@ TEST_CASE("a 3D float texture samples trilinearly between texel centres") {
     CHECK_THROWS_AS(volume.subImage(1, 1, 1, 2, 1, 1, GL_RED, GL_FLOAT, &nine), Error);
 }
 
+TEST_CASE("subImage uploads a rectangle of a larger image by its row length") {
+    OSMesaContext context;
+    Texture texture(GL_TEXTURE_2D);
+    const std::vector<float> zeros(4 * 3, 0.0f);
+    texture.image2D(GL_R32F, 4, 3, GL_RED, GL_FLOAT, zeros.data());
+    // A 5 x 3 image whose texel (x, y) holds 10 y + x; its 2 x 2 rectangle at (2, 1) goes to
+    // texels (1, 1)-(2, 2).
+    std::vector<float> image(5 * 3);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x)
+            image[std::size_t(y * 5 + x)] = float(10 * y + x);
+    texture.subImage(1, 1, 0, 2, 2, 1, GL_RED, GL_FLOAT, image.data() + 1 * 5 + 2, 5);
+    GLint rowLength = -1;
+    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+    CHECK(rowLength == 0); // restored
+    std::vector<float> read(4 * 3, -1.0f);
+    texture.bind(0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, read.data());
+    checkGlError("read back");
+    const std::vector<float> expected{0, 0,  0,  0, //
+                                      0, 12, 13, 0, //
+                                      0, 22, 23, 0};
+    CHECK(read == expected);
+    CHECK_THROWS_AS(texture.subImage(0, 0, 0, 3, 1, 1, GL_RED, GL_FLOAT, image.data(), 2), Error);
+}
+
 TEST_CASE("an incomplete framebuffer throws an Error with its status") {
     OSMesaContext context;
     Framebuffer fb = Framebuffer::create();

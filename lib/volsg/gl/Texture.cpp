@@ -14,16 +14,21 @@ void deleteTexture(GLuint name) {
 /// Tightly packed rows for the duration of an upload, whatever the caller had set.
 class TightUnpacking {
 public:
-    TightUnpacking() {
+    explicit TightUnpacking(int rowLength = 0) {
         glGetIntegerv(GL_UNPACK_ALIGNMENT, &previous_);
+        glGetIntegerv(GL_UNPACK_ROW_LENGTH, &previousRowLength_);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
     }
-    ~TightUnpacking() { glPixelStorei(GL_UNPACK_ALIGNMENT, previous_); }
+    ~TightUnpacking() {
+        glPixelStorei(GL_UNPACK_ALIGNMENT, previous_);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, previousRowLength_);
+    }
     TightUnpacking(const TightUnpacking&) = delete;
     TightUnpacking& operator=(const TightUnpacking&) = delete;
 
 private:
-    GLint previous_ = 4;
+    GLint previous_ = 4, previousRowLength_ = 0;
 };
 
 } // namespace
@@ -85,10 +90,12 @@ void Texture::image3D(GLenum internalFormat, int width, int height, int depth, G
 }
 
 void Texture::subImage(int x, int y, int z, int width, int height, int depth, GLenum format,
-                       GLenum type, const void* data) {
+                       GLenum type, const void* data, int rowLength) {
     if (x < 0 || y < 0 || z < 0 || x + width > width_ || y + height > height_ || z + depth > depth_)
         throw Error("Texture::subImage: the box lies outside the texture");
-    TightUnpacking tight;
+    if (rowLength != 0 && rowLength < width)
+        throw Error("Texture::subImage: rows of the data are shorter than the box");
+    TightUnpacking tight(rowLength);
     glBindTexture(target_, name_.get());
     if (target_ == GL_TEXTURE_1D)
         glTexSubImage1D(target_, 0, x, width, format, type, data);

@@ -31,8 +31,10 @@ public:
     void image3D(GLenum internalFormat, int width, int height, int depth, GLenum format,
                  GLenum type, const void* data);
     /// Overwrites a box of level 0 (for 1D and 2D, the unused extents are 1 and offsets 0).
+    /// `rowLength`: pixels from one row of `data` to the next (0: the box's width), so a
+    /// rectangle of a larger image uploads without a copy.
     void subImage(int x, int y, int z, int width, int height, int depth, GLenum format, GLenum type,
-                  const void* data);
+                  const void* data, int rowLength = 0);
 
     void setFilter(GLenum minFilter, GLenum magFilter);
     void setWrap(GLenum mode); ///< on every axis

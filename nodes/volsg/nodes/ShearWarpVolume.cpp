@@ -354,8 +354,8 @@ void ShearWarpVolume::render(RenderAction& action) {
         gl.color.setFilter(GL_NEAREST, GL_NEAREST);
         gl.depth.setFilter(GL_NEAREST, GL_NEAREST);
     }
-    // Only the rows the warp wrote are uploaded and only its rectangle is drawn: outside it
-    // the image is 0 (nothing to blend) and the depth 1.
+    // Only the rectangle the warp wrote is uploaded and drawn: outside it the image is 0
+    // (nothing to blend) and the depth 1.
     const ShearWarpFrame& f = *lastFrame_;
     const glm::ivec4 drawn = f.drawn;
     if (drawn.x >= drawn.z || drawn.y >= drawn.w) return;
@@ -365,12 +365,14 @@ void ShearWarpVolume::render(RenderAction& action) {
         gl.depth.image2D(GL_R32F, rv.width, rv.height, GL_RED, GL_FLOAT, nullptr);
         gl.size = glm::ivec2(rv.width, rv.height);
     }
-    const std::size_t firstRow = std::size_t(drawn.y) * std::size_t(rv.width);
-    gl.color.subImage(0, drawn.y, 0, rv.width, drawn.w - drawn.y, 1, GL_RGBA, GL_FLOAT,
-                      f.image.pixels.data() + firstRow);
+    // The rectangle alone (texels outside it are never read: the draw is scissored to it).
+    const std::size_t first = std::size_t(drawn.y) * std::size_t(rv.width) + std::size_t(drawn.x);
+    const int width = drawn.z - drawn.x, height = drawn.w - drawn.y;
+    gl.color.subImage(drawn.x, drawn.y, 0, width, height, 1, GL_RGBA, GL_FLOAT,
+                      f.image.pixels.data() + first, rv.width);
     if (f.wroteDepth)
-        gl.depth.subImage(0, drawn.y, 0, rv.width, drawn.w - drawn.y, 1, GL_RED, GL_FLOAT,
-                          f.windowDepth.data() + firstRow);
+        gl.depth.subImage(drawn.x, drawn.y, 0, width, height, 1, GL_RED, GL_FLOAT,
+                          f.windowDepth.data() + first, rv.width);
     target.bind();
     const GLboolean scissorWasOn = glIsEnabled(GL_SCISSOR_TEST);
     GLint scissorBox[4];
