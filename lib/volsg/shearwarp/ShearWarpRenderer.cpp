@@ -151,9 +151,9 @@ struct UnderRow {
 };
 
 /// Composites the resampled samples wa * a[c] + wb * b[c] (line a or b absent as the template
-/// says) over columns [lo, hi) and clears line b. A function of its own (not inlined into the
-/// band loop) so the compiler keeps the loop's values in registers: inlined, it went through
-/// the stack for every pixel.
+/// says) over columns [lo, hi); the caller clears line b (one memset, not a store per pixel). A
+/// function of its own (not inlined into the band loop) so the compiler keeps the loop's values in
+/// registers: inlined, it went through the stack for every pixel.
 template <bool HasA, bool HasB, bool HasLimit>
 [[gnu::noinline]] void compositeUnder(const UnderRow& row, const glm::vec4* a, float wa,
                                       glm::vec4* b, float wb, int lo, int hi) {
@@ -167,15 +167,12 @@ template <bool HasA, bool HasB, bool HasLimit>
     const float slice = row.slice;
     for (int c = lo; c < hi; ++c) {
         V4 sample;
-        if constexpr (HasA && HasB) {
+        if constexpr (HasA && HasB)
             sample = wa * loadV4(a[c]) + wb * loadV4(b[c]);
-            storeV4(b[c], V4{});
-        } else if constexpr (HasA) {
+        else if constexpr (HasA)
             sample = wa * loadV4(a[c]);
-        } else {
+        else
             sample = wb * loadV4(b[c]);
-            storeV4(b[c], V4{});
-        }
         const float alpha = g[c].w; // a load of its own: from the vector GCC went via the stack
         if (alpha >= kOpaque) {
             // Terminated (by an earlier slice): linked the first time it is met here, off the
@@ -362,7 +359,6 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     frame.stats.intermediateSize = {W, H};
     const int sliceStep = std::clamp(view.sliceStep, 1, std::max(1, nc));
     frame.stats.sliceStep = sliceStep;
-
     // --- Objects: lists, clip split, tables ------------------------------------------------
     std::vector<FrameObject> fo(objects.size());
     std::set<RenderList*> lists;
@@ -434,7 +430,6 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
             pureMip = sortedVoxels.back() != nullptr;
         }
     frame.stats.valueSortedMip = pureMip;
-
     // --- Buffers ---------------------------------------------------------------------------
     // Sized here (never shrunk, so a size change fills nothing serially); each band's thread
     // clears its own rows (initRows), in parallel and into its own cache.
@@ -504,7 +499,6 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     const int threads =
         std::clamp(view.threads > 0 ? view.threads : int(hardware), 1, std::max(1, H / 4));
     bands_.resize(std::size_t(threads));
-
     // --- Compositing, one band of intermediate rows per thread ------------------------------
     const InterObjectCompositing inter = view.interObject;
     auto flush = [&](std::size_t p) {
@@ -793,6 +787,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                             const int lo = std::min(a ? a->lo : W, b ? b->lo : W);
                             const int hi = std::max(a ? a->hi : 0, b ? b->hi : 0);
                             glm::vec4* pb = b ? b->px : nullptr;
+                            const int bLo = b ? b->lo : 0, bHi = b ? b->hi : 0; // b's writes
                             if (b) {
                                 b->lo = std::numeric_limits<int>::max();
                                 b->hi = 0;
@@ -846,6 +841,9 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                     under(std::true_type{}, std::false_type{});
                                 else
                                     under(std::false_type{}, std::true_type{});
+                                if (pb && bLo < bHi)
+                                    std::memset(static_cast<void*>(pb + bLo), 0,
+                                                std::size_t(bHi - bLo) * sizeof(glm::vec4));
                                 return;
                             }
                             for (int c = lo; c < hi; ++c) {
@@ -1054,7 +1052,6 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         frame.stats.entriesDrawn += s.entries;
     }
     locks.clear();
-
     // --- Warp: bilinear from the intermediate image ------------------------------------------
     auto fetch = [&](int u, int v) {
         if (u < 0 || v < 0 || u >= W || v >= H) return glm::vec4(0.0f);
