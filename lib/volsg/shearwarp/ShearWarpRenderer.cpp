@@ -110,7 +110,8 @@ struct FrameObject {
     int slicePhase = 0;
 };
 
-/// First index in [begin, end) whose packed b is >= b (voxels sorted by b).
+/// First index in [begin, end) whose packed b is >= b (voxels sorted by b). (A branch-free
+/// halving measured 10% slower frames on the sphere: the predicted branches let loads run ahead.)
 std::uint32_t lowerRow(const std::uint32_t* packed, std::uint32_t begin, std::uint32_t end, int b) {
     if (b <= 0) return begin;
     return std::uint32_t(
@@ -120,15 +121,22 @@ std::uint32_t lowerRow(const std::uint32_t* packed, std::uint32_t begin, std::ui
 }
 
 /// The end of voxel row b that starts at `begin` (voxels sorted by b; the row ends by
-/// `limit`): `guess` voxels on when that holds, as it mostly does for the previous row's
-/// length, else a binary search.
+/// `limit`; empty when the voxel at `begin` is of a later row). Neighbouring rows are mostly about
+/// as long: the end is looked for a few voxels either side of `guess` (the previous row's length)
+/// before a search.
 std::uint32_t rowEnd(const std::uint32_t* packed, std::uint32_t begin, std::uint32_t limit,
                      unsigned b, std::uint32_t guess) {
-    const std::uint32_t e = begin + guess;
-    if (guess > 0 && e <= limit && PackedVoxel::b(packed[e - 1]) == b &&
-        (e == limit || PackedVoxel::b(packed[e]) != b))
-        return e;
-    return lowerRow(packed, begin, limit, int(b) + 1);
+    constexpr std::uint32_t kNear = 8;
+    if (PackedVoxel::b(packed[begin]) != b) return begin;          // this part has no row b
+    std::uint32_t e = std::clamp(begin + guess, begin + 1, limit); // the row has a voxel
+    if (PackedVoxel::b(packed[e - 1]) == b) {                      // the row reaches e
+        for (const std::uint32_t far = std::min(limit, e + kNear); e < far; ++e)
+            if (PackedVoxel::b(packed[e]) != b) return e;
+        return e == limit ? e : lowerRow(packed, e, limit, int(b) + 1);
+    }
+    for (const std::uint32_t near = std::max(begin + 1, e > kNear ? e - kNear : 0); e > near;)
+        if (PackedVoxel::b(packed[--e - 1]) == b) return e;
+    return lowerRow(packed, begin + 1, e, int(b) + 1);
 }
 
 glm::vec4 mipLookup(const std::vector<glm::vec4>& table, float value) {
