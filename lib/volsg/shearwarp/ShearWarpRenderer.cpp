@@ -15,14 +15,17 @@
 
 #include <volsg/core/Error.h>
 #include <volsg/shearwarp/PackedVoxel.h>
+#include <volsg/shearwarp/UnderComposite.h>
 #include <volsg/shearwarp/VoxelTables.h>
 
 namespace volsg {
 
 namespace {
 
-constexpr float kPickAlpha = 0.02f;         // a sample this opaque (or more) is what a click hits
-constexpr float kOpaque = 0.999f;           // pure DVR: a pixel this opaque takes no more samples
+constexpr float kPickAlpha =
+    UnderComposite::kPickAlpha; // a sample this opaque is what a click hits
+constexpr float kOpaque =
+    UnderComposite::kOpaque;                // pure DVR: a pixel this opaque takes no more samples
 constexpr float kSurfaceAlpha = 0.5f;       // a Surface run this opaque is drawn opaque
 constexpr float kSurfaceDepthAlpha = 0.25f; // a Surface sample this opaque may give the depth
 // Bands of intermediate rows per thread. Measured (sphere, 2 threads, alternating runs): with 3
@@ -144,62 +147,6 @@ glm::vec4 mipLookup(const std::vector<glm::vec4>& table, float value) {
     const int i = std::min(int(x), 4094);
     const float f = x - float(i);
     return table[std::size_t(i)] * (1.0f - f) + table[std::size_t(i) + 1] * f;
-}
-
-/// One intermediate row of a pure DVR frame, composited front to back ("under").
-struct UnderRow {
-    glm::vec4* pixels;
-    std::int16_t* pickObject;
-    float* pickSlice;
-    std::int32_t* open; ///< opaque-pixel links
-    const float* limit; ///< null: no opaque geometry
-    int* opaqueCount;   ///< the row's stopped pixels
-    std::int16_t object;
-    float slice, zSlice;
-};
-
-/// Composites the resampled samples wa * a[c] + wb * b[c] (line a or b absent as the template
-/// says) over columns [lo, hi); the caller clears line b (one memset, not a store per pixel). A
-/// function of its own (not inlined into the band loop) so the compiler keeps the loop's values in
-/// registers: inlined, it went through the stack for every pixel.
-template <bool HasA, bool HasB, bool HasLimit>
-[[gnu::noinline]] void compositeUnder(const UnderRow& row, const glm::vec4* a, float wa,
-                                      glm::vec4* b, float wb, int lo, int hi) {
-    // Locals: read through `row` the pointers were reloaded after every store.
-    glm::vec4* const g = row.pixels;
-    std::int16_t* const pickObject = row.pickObject;
-    float* const pickSlice = row.pickSlice;
-    const float* const limit = row.limit;
-    const float zSlice = row.zSlice;
-    const std::int16_t object = row.object;
-    const float slice = row.slice;
-    for (int c = lo; c < hi; ++c) {
-        V4 sample;
-        if constexpr (HasA && HasB)
-            sample = wa * loadV4(a[c]) + wb * loadV4(b[c]);
-        else if constexpr (HasA)
-            sample = wa * loadV4(a[c]);
-        else
-            sample = wb * loadV4(b[c]);
-        const float alpha = g[c].w; // a load of its own: from the vector GCC went via the stack
-        if (alpha >= kOpaque) {
-            // Terminated (by an earlier slice): linked the first time it is met here, off the
-            // path of the pixels still open.
-            if (row.open[c] == c) {
-                row.open[c] = c + 1;
-                ++*row.opaqueCount;
-            }
-            continue;
-        }
-        if (sample[3] <= 0.0f) continue;
-        if (HasLimit && !(zSlice > limit[c])) continue; // behind geometry
-        const V4 gc = loadV4(g[c]) + (1.0f - alpha) * sample;
-        storeV4(g[c], gc);
-        if (sample[3] >= kPickAlpha && pickObject[c] < 0) {
-            pickObject[c] = object;
-            pickSlice[c] = slice;
-        }
-    }
 }
 
 } // namespace
@@ -507,6 +454,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     const int threads =
         std::clamp(view.threads > 0 ? view.threads : int(hardware), 1, std::max(1, H / 4));
     bands_.resize(std::size_t(threads));
+    const UnderKernel underKernel = UnderComposite::best();
     // --- Compositing, one band of intermediate rows per thread ------------------------------
     const InterObjectCompositing inter = view.interObject;
     auto flush = [&](std::size_t p) {
@@ -833,22 +781,8 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                                       std::int16_t(oi),
                                                       float(k),
                                                       zSlice};
-                                auto under = [&](auto hasA, auto hasB) {
-                                    constexpr bool withA = decltype(hasA)::value;
-                                    constexpr bool withB = decltype(hasB)::value;
-                                    if (hasLimit)
-                                        compositeUnder<withA, withB, true>(target, pa, wa, pb, wb,
-                                                                           lo, hi);
-                                    else
-                                        compositeUnder<withA, withB, false>(target, pa, wa, pb, wb,
-                                                                            lo, hi);
-                                };
-                                if (pa && pb)
-                                    under(std::true_type{}, std::true_type{});
-                                else if (pa)
-                                    under(std::true_type{}, std::false_type{});
-                                else
-                                    under(std::false_type{}, std::true_type{});
+                                UnderComposite::composite(underKernel, target, pa, wa, pb, wb, lo,
+                                                          hi);
                                 if (pb && bLo < bHi)
                                     std::memset(static_cast<void*>(pb + bLo), 0,
                                                 std::size_t(bHi - bLo) * sizeof(glm::vec4));

@@ -1,0 +1,182 @@
+#include <volsg/shearwarp/UnderComposite.h>
+
+#include <cstdlib>
+#include <cstring>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define VOLSG_UNDER_AVX2 1
+#endif
+
+namespace volsg {
+
+namespace {
+
+constexpr float kOpaque = UnderComposite::kOpaque;
+constexpr float kPickAlpha = UnderComposite::kPickAlpha;
+
+/// Four floats in one SSE/NEON register (GCC/Clang vector extension): the same IEEE operations
+/// per component as glm::vec4's, done at once.
+using V4 = float __attribute__((vector_size(16)));
+inline V4 loadV4(const glm::vec4& v) {
+    V4 r;
+    std::memcpy(&r, &v, sizeof r);
+    return r;
+}
+inline void storeV4(glm::vec4& d, V4 v) {
+    std::memcpy(&d, &v, sizeof v);
+}
+
+/// Pixel c of the row: the definition every kernel follows.
+template <bool HasA, bool HasB, bool HasLimit>
+inline void underPixel(const UnderRow& row, const glm::vec4* a, float wa, const glm::vec4* b,
+                       float wb, int c) {
+    V4 sample;
+    if constexpr (HasA && HasB)
+        sample = wa * loadV4(a[c]) + wb * loadV4(b[c]);
+    else if constexpr (HasA)
+        sample = wa * loadV4(a[c]);
+    else
+        sample = wb * loadV4(b[c]);
+    glm::vec4* const g = row.pixels;
+    const float alpha = g[c].w; // a load of its own: from the vector GCC went via the stack
+    if (alpha >= kOpaque) {
+        // Terminated (by an earlier slice): linked the first time it is met here, off the
+        // path of the pixels still open.
+        if (row.open[c] == c) {
+            row.open[c] = c + 1;
+            ++*row.opaqueCount;
+        }
+        return;
+    }
+    if (sample[3] <= 0.0f) return;
+    if (HasLimit && !(row.zSlice > row.limit[c])) return; // behind geometry
+    storeV4(g[c], loadV4(g[c]) + (1.0f - alpha) * sample);
+    if (sample[3] >= kPickAlpha && row.pickObject[c] < 0) {
+        row.pickObject[c] = row.object;
+        row.pickSlice[c] = row.slice;
+    }
+}
+
+/// A function of its own per line combination (not inlined into the band loop) so the compiler
+/// keeps the loop's values in registers: inlined, it went through the stack for every pixel.
+template <bool HasA, bool HasB, bool HasLimit>
+[[gnu::noinline]] void underScalar(const UnderRow& row, const glm::vec4* a, float wa,
+                                   const glm::vec4* b, float wb, int lo, int hi) {
+    const UnderRow local = row; // read through `row` the pointers were reloaded after every store
+    for (int c = lo; c < hi; ++c)
+        underPixel<HasA, HasB, HasLimit>(local, a, wa, b, wb, c);
+}
+
+#ifdef VOLSG_UNDER_AVX2
+/// Two pixels a step in one 256-bit register: the same operations per component as underPixel
+/// (no fused multiply-add), so the same pixels. Pixels that are opaque already, or whose pick
+/// is due, go through underPixel (each once a frame: rare on the hot path).
+template <bool HasA, bool HasB>
+[[gnu::noinline, gnu::target("avx2")]] void underAvx2(const UnderRow& row, const glm::vec4* a,
+                                                      float wa, const glm::vec4* b, float wb,
+                                                      int lo, int hi) {
+    const UnderRow local = row;
+    glm::vec4* const g = local.pixels;
+    const std::int16_t* const pickObject = local.pickObject;
+    const __m256 wa8 = _mm256_set1_ps(wa), wb8 = _mm256_set1_ps(wb);
+    const __m256 one = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
+    const __m256 pickAlpha = _mm256_set1_ps(kPickAlpha);
+    int c = lo;
+    for (; c + 2 <= hi; c += 2) {
+        if (g[c].w >= kOpaque || g[c + 1].w >= kOpaque) {
+            underPixel<HasA, HasB, false>(local, a, wa, b, wb, c);
+            underPixel<HasA, HasB, false>(local, a, wa, b, wb, c + 1);
+            continue;
+        }
+        __m256 sample;
+        if constexpr (HasA && HasB)
+            sample = _mm256_add_ps(_mm256_mul_ps(wa8, _mm256_loadu_ps(&a[c].x)),
+                                   _mm256_mul_ps(wb8, _mm256_loadu_ps(&b[c].x)));
+        else if constexpr (HasA)
+            sample = _mm256_mul_ps(wa8, _mm256_loadu_ps(&a[c].x));
+        else
+            sample = _mm256_mul_ps(wb8, _mm256_loadu_ps(&b[c].x));
+        const __m256 pixels = _mm256_loadu_ps(&g[c].x);
+        const __m256 alpha = _mm256_permute_ps(pixels, 0xFF);       // each pixel's w, broadcast
+        const __m256 sampleAlpha = _mm256_permute_ps(sample, 0xFF); // likewise the sample's
+        const __m256 under =
+            _mm256_add_ps(pixels, _mm256_mul_ps(_mm256_sub_ps(one, alpha), sample));
+        const __m256 shown = _mm256_cmp_ps(sampleAlpha, zero, _CMP_GT_OQ);
+        _mm256_storeu_ps(&g[c].x, _mm256_blendv_ps(pixels, under, shown));
+        // Picks due: sample alpha >= kPickAlpha (lanes 3 and 7) at a pixel without one yet.
+        const int heavy = _mm256_movemask_ps(_mm256_cmp_ps(sample, pickAlpha, _CMP_GE_OQ));
+        std::uint32_t objects;
+        std::memcpy(&objects, pickObject + c, sizeof objects);
+        const unsigned due = (((unsigned(heavy) >> 3) & 1u) | ((unsigned(heavy) >> 6) & 2u)) &
+                             (((objects >> 15) & 1u) | ((objects >> 30) & 2u));
+        if (due) [[unlikely]] {
+            for (int i = 0; i < 2; ++i)
+                if (due & (1u << i)) {
+                    local.pickObject[c + i] = local.object;
+                    local.pickSlice[c + i] = local.slice;
+                }
+        }
+    }
+    if (c < hi) underPixel<HasA, HasB, false>(local, a, wa, b, wb, c);
+}
+
+bool cpuHasAvx2() {
+    static const bool has = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
+    return has;
+}
+#endif
+
+template <bool HasA, bool HasB>
+void dispatch(UnderKernel kernel, const UnderRow& row, const glm::vec4* a, float wa,
+              const glm::vec4* b, float wb, int lo, int hi) {
+    if (row.limit) {
+        underScalar<HasA, HasB, true>(row, a, wa, b, wb, lo, hi);
+        return;
+    }
+#ifdef VOLSG_UNDER_AVX2
+    if (kernel == UnderKernel::Avx2) {
+        underAvx2<HasA, HasB>(row, a, wa, b, wb, lo, hi);
+        return;
+    }
+#else
+    (void)kernel;
+#endif
+    underScalar<HasA, HasB, false>(row, a, wa, b, wb, lo, hi);
+}
+
+} // namespace
+
+bool UnderComposite::available(UnderKernel kernel) {
+    if (kernel == UnderKernel::Scalar) return true;
+#ifdef VOLSG_UNDER_AVX2
+    return cpuHasAvx2();
+#else
+    return false;
+#endif
+}
+
+UnderKernel UnderComposite::best() {
+    static const UnderKernel kernel = [] {
+        const char* off = std::getenv("VOLSG_NO_AVX2");
+        if (off && std::strcmp(off, "1") == 0) return UnderKernel::Scalar;
+        return available(UnderKernel::Avx2) ? UnderKernel::Avx2 : UnderKernel::Scalar;
+    }();
+    return kernel;
+}
+
+void UnderComposite::composite(UnderKernel kernel, const UnderRow& row, const glm::vec4* a,
+                               float wa, const glm::vec4* b, float wb, int lo, int hi) {
+    if (!available(kernel)) kernel = UnderKernel::Scalar;
+    if (a && b)
+        dispatch<true, true>(kernel, row, a, wa, b, wb, lo, hi);
+    else if (a)
+        dispatch<true, false>(kernel, row, a, wa, b, wb, lo, hi);
+    else if (b)
+        dispatch<false, true>(kernel, row, a, wa, b, wb, lo, hi);
+}
+
+} // namespace volsg

@@ -1,0 +1,46 @@
+#pragma once
+// The pure DVR row composite of the shear-warp renderer: one resampled intermediate row
+// composited front to back ("under") into the image, with early ray termination.
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace volsg {
+
+/// One intermediate row of a pure DVR frame and what compositing into it updates.
+struct UnderRow {
+    glm::vec4* pixels;        ///< premultiplied colour and alpha, front to back
+    std::int16_t* pickObject; ///< -1 until a sample of alpha >= kPickAlpha arrives
+    float* pickSlice;
+    std::int32_t* open; ///< opaque-pixel links: c while pixel c is open, later c + 1
+    const float* limit; ///< null: no opaque geometry; else a sample counts when zSlice > limit
+    int* opaqueCount;   ///< the row's stopped pixels (linked ones)
+    std::int16_t object;
+    float slice, zSlice;
+};
+
+/// Implementations of one definition: every kernel gives the same pixels bit for bit.
+enum class UnderKernel {
+    Scalar, ///< one pixel a step (SSE: one vec4 per instruction)
+    Avx2,   ///< two pixels a step (AVX2), when the CPU has it
+};
+
+struct UnderComposite {
+    static constexpr float kOpaque = 0.999f;   ///< a pixel this opaque takes no more samples
+    static constexpr float kPickAlpha = 0.02f; ///< a sample this opaque is what a click hits
+
+    /// The fastest kernel this CPU runs (Scalar when the environment sets VOLSG_NO_AVX2=1).
+    static UnderKernel best();
+    static bool available(UnderKernel kernel);
+
+    /// Composites the samples wa * a[c] + wb * b[c] (a or b may be null: absent) under the
+    /// row's pixels for c in [lo, hi). A pixel whose alpha is already >= kOpaque takes nothing
+    /// and is linked past (open[c] = c + 1) the first time it is met; a sample of alpha <= 0
+    /// or behind the opaque limit is skipped; the first sample of alpha >= kPickAlpha at a
+    /// pixel records the row's object and slice. The lines are only read.
+    static void composite(UnderKernel kernel, const UnderRow& row, const glm::vec4* a, float wa,
+                          const glm::vec4* b, float wb, int lo, int hi);
+};
+
+} // namespace volsg
