@@ -69,54 +69,69 @@ template <bool HasA, bool HasB, bool HasLimit>
 }
 
 #ifdef VOLSG_UNDER_AVX2
-/// Two pixels a step in one 256-bit register: the same operations per component as underPixel
+/// The constants of the AVX2 kernel, broadcast once a row.
+struct Avx2Weights {
+    __m256 wa, wb, one, zero, pickAlpha, opaque;
+};
+
+/// Pixels c and c + 1 in one 256-bit register: the same operations per component as underPixel
 /// (no fused multiply-add), so the same pixels. Pixels that are opaque already, or whose pick
 /// is due, go through underPixel (each once a frame: rare on the hot path).
+template <bool HasA, bool HasB>
+[[gnu::always_inline, gnu::target("avx2")]] inline void
+underPairAvx2(const UnderRow& row, const Avx2Weights& k, const glm::vec4* a, float wa,
+              const glm::vec4* b, float wb, int c) {
+    glm::vec4* const g = row.pixels;
+    const __m256 pixels = _mm256_loadu_ps(&g[c].x);
+    if (_mm256_movemask_ps(_mm256_cmp_ps(pixels, k.opaque, _CMP_GE_OQ)) & 0x88) {
+        underPixel<HasA, HasB, false>(row, a, wa, b, wb, c);
+        underPixel<HasA, HasB, false>(row, a, wa, b, wb, c + 1);
+        return;
+    }
+    __m256 sample;
+    if constexpr (HasA && HasB)
+        sample = _mm256_add_ps(_mm256_mul_ps(k.wa, _mm256_loadu_ps(&a[c].x)),
+                               _mm256_mul_ps(k.wb, _mm256_loadu_ps(&b[c].x)));
+    else if constexpr (HasA)
+        sample = _mm256_mul_ps(k.wa, _mm256_loadu_ps(&a[c].x));
+    else
+        sample = _mm256_mul_ps(k.wb, _mm256_loadu_ps(&b[c].x));
+    const __m256 alpha = _mm256_permute_ps(pixels, 0xFF);       // each pixel's w, broadcast
+    const __m256 sampleAlpha = _mm256_permute_ps(sample, 0xFF); // likewise the sample's
+    const __m256 under = _mm256_add_ps(pixels, _mm256_mul_ps(_mm256_sub_ps(k.one, alpha), sample));
+    const __m256 shown = _mm256_cmp_ps(sampleAlpha, k.zero, _CMP_GT_OQ);
+    _mm256_storeu_ps(&g[c].x, _mm256_blendv_ps(pixels, under, shown));
+    // Picks due: sample alpha >= kPickAlpha (lanes 3 and 7) at a pixel without one yet.
+    const int heavy = _mm256_movemask_ps(_mm256_cmp_ps(sample, k.pickAlpha, _CMP_GE_OQ));
+    std::uint32_t objects;
+    std::memcpy(&objects, row.pickObject + c, sizeof objects);
+    const unsigned due = (((unsigned(heavy) >> 3) & 1u) | ((unsigned(heavy) >> 6) & 2u)) &
+                         (((objects >> 15) & 1u) | ((objects >> 30) & 2u));
+    if (due) [[unlikely]] {
+        for (int i = 0; i < 2; ++i)
+            if (due & (1u << i)) {
+                row.pickObject[c + i] = row.object;
+                row.pickSlice[c + i] = row.slice;
+            }
+    }
+}
+
+/// Four pixels a step (two pairs, interleaved by the compiler), then the rest.
 template <bool HasA, bool HasB>
 [[gnu::noinline, gnu::target("avx2")]] void underAvx2(const UnderRow& row, const glm::vec4* a,
                                                       float wa, const glm::vec4* b, float wb,
                                                       int lo, int hi) {
     const UnderRow local = row;
-    glm::vec4* const g = local.pixels;
-    const std::int16_t* const pickObject = local.pickObject;
-    const __m256 wa8 = _mm256_set1_ps(wa), wb8 = _mm256_set1_ps(wb);
-    const __m256 one = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
-    const __m256 pickAlpha = _mm256_set1_ps(kPickAlpha);
+    const Avx2Weights k{_mm256_set1_ps(wa),  _mm256_set1_ps(wb),         _mm256_set1_ps(1.0f),
+                        _mm256_setzero_ps(), _mm256_set1_ps(kPickAlpha), _mm256_set1_ps(kOpaque)};
     int c = lo;
-    for (; c + 2 <= hi; c += 2) {
-        if (g[c].w >= kOpaque || g[c + 1].w >= kOpaque) {
-            underPixel<HasA, HasB, false>(local, a, wa, b, wb, c);
-            underPixel<HasA, HasB, false>(local, a, wa, b, wb, c + 1);
-            continue;
-        }
-        __m256 sample;
-        if constexpr (HasA && HasB)
-            sample = _mm256_add_ps(_mm256_mul_ps(wa8, _mm256_loadu_ps(&a[c].x)),
-                                   _mm256_mul_ps(wb8, _mm256_loadu_ps(&b[c].x)));
-        else if constexpr (HasA)
-            sample = _mm256_mul_ps(wa8, _mm256_loadu_ps(&a[c].x));
-        else
-            sample = _mm256_mul_ps(wb8, _mm256_loadu_ps(&b[c].x));
-        const __m256 pixels = _mm256_loadu_ps(&g[c].x);
-        const __m256 alpha = _mm256_permute_ps(pixels, 0xFF);       // each pixel's w, broadcast
-        const __m256 sampleAlpha = _mm256_permute_ps(sample, 0xFF); // likewise the sample's
-        const __m256 under =
-            _mm256_add_ps(pixels, _mm256_mul_ps(_mm256_sub_ps(one, alpha), sample));
-        const __m256 shown = _mm256_cmp_ps(sampleAlpha, zero, _CMP_GT_OQ);
-        _mm256_storeu_ps(&g[c].x, _mm256_blendv_ps(pixels, under, shown));
-        // Picks due: sample alpha >= kPickAlpha (lanes 3 and 7) at a pixel without one yet.
-        const int heavy = _mm256_movemask_ps(_mm256_cmp_ps(sample, pickAlpha, _CMP_GE_OQ));
-        std::uint32_t objects;
-        std::memcpy(&objects, pickObject + c, sizeof objects);
-        const unsigned due = (((unsigned(heavy) >> 3) & 1u) | ((unsigned(heavy) >> 6) & 2u)) &
-                             (((objects >> 15) & 1u) | ((objects >> 30) & 2u));
-        if (due) [[unlikely]] {
-            for (int i = 0; i < 2; ++i)
-                if (due & (1u << i)) {
-                    local.pickObject[c + i] = local.object;
-                    local.pickSlice[c + i] = local.slice;
-                }
-        }
+    for (; c + 4 <= hi; c += 4) {
+        underPairAvx2<HasA, HasB>(local, k, a, wa, b, wb, c);
+        underPairAvx2<HasA, HasB>(local, k, a, wa, b, wb, c + 2);
+    }
+    if (c + 2 <= hi) {
+        underPairAvx2<HasA, HasB>(local, k, a, wa, b, wb, c);
+        c += 2;
     }
     if (c < hi) underPixel<HasA, HasB, false>(local, a, wa, b, wb, c);
 }
