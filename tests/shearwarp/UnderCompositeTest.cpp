@@ -101,9 +101,9 @@ RowState randomRow(std::mt19937& rng, int width) {
 } // namespace
 
 TEST_CASE("every row composite kernel gives the definition's pixels bit for bit") {
-    std::vector<UnderKernel> kernels{UnderKernel::Scalar};
-    if (UnderComposite::available(UnderKernel::Avx2))
-        kernels.push_back(UnderKernel::Avx2);
+    std::vector<SimdLevel> levels{SimdLevel::Scalar};
+    if (simdLevelAvailable(SimdLevel::Avx2))
+        levels.push_back(SimdLevel::Avx2);
     else
         MESSAGE("this CPU has no AVX2: the scalar kernel only");
     std::mt19937 rng(20261125);
@@ -130,22 +130,22 @@ TEST_CASE("every row composite kernel gives the definition's pixels bit for bit"
                     const RowState start = randomRow(rng, width);
                     RowState expected = start;
                     compositeByDefinition(expected, pa, wa, pb, wb, lo, hi, lim);
-                    for (UnderKernel kernel : kernels) {
+                    for (SimdLevel level : levels) {
                         RowState got = start;
-                        UnderComposite::composite(kernel, got.row(lim), pa, wa, pb, wb, lo, hi);
-                        INFO("kernel ", int(kernel), ", width ", width, ", columns [", lo, ", ", hi,
+                        UnderComposite::composite(level, got.row(lim), pa, wa, pb, wb, lo, hi);
+                        INFO("level ", int(level), ", width ", width, ", columns [", lo, ", ", hi,
                              "), lines ", lines, ", limit ", withLimit);
                         CHECK(got == expected);
                     }
                     ++rows;
                 }
-    MESSAGE(rows, " rows, ", kernels.size(), " kernels");
+    MESSAGE(rows, " rows, ", levels.size(), " levels");
 }
 
 TEST_CASE("the row composite stops at the opaque threshold and records the first heavy sample") {
     // Three pixels: open, just below kOpaque, at it. Two samples of alpha 0.5 arrive.
-    for (UnderKernel kernel : {UnderKernel::Scalar, UnderKernel::Avx2}) {
-        if (!UnderComposite::available(kernel)) continue;
+    for (SimdLevel level : {SimdLevel::Scalar, SimdLevel::Avx2}) {
+        if (!simdLevelAvailable(level)) continue;
         RowState s;
         s.pixels = {glm::vec4(0.0f), glm::vec4(0.0f, 0.0f, 0.0f, 0.9985f),
                     glm::vec4(0.0f, 0.0f, 0.0f, 0.999f), glm::vec4(0.0f)};
@@ -153,7 +153,7 @@ TEST_CASE("the row composite stops at the opaque threshold and records the first
         s.pickSlice.assign(4, 0.0f);
         s.open = {0, 1, 2, 3};
         const std::vector<glm::vec4> line(4, glm::vec4(0.5f, 0.25f, 0.0f, 0.5f));
-        UnderComposite::composite(kernel, s.row(nullptr), line.data(), 1.0f, nullptr, 0.0f, 0, 3);
+        UnderComposite::composite(level, s.row(nullptr), line.data(), 1.0f, nullptr, 0.0f, 0, 3);
         CHECK(s.pixels[0] == glm::vec4(0.5f, 0.25f, 0.0f, 0.5f));
         CHECK(s.pixels[1].w == doctest::Approx(0.9985f + 0.0015f * 0.5f).epsilon(1e-6));
         CHECK(s.pixels[2].w == 0.999f); // terminated: takes nothing
@@ -166,7 +166,7 @@ TEST_CASE("the row composite stops at the opaque threshold and records the first
         s.pickSlice[0] = 3.0f;
         const glm::vec4 stopped = s.pixels[1];
         CHECK(stopped.w >= UnderComposite::kOpaque);
-        UnderComposite::composite(kernel, s.row(nullptr), line.data(), 1.0f, nullptr, 0.0f, 0, 3);
+        UnderComposite::composite(level, s.row(nullptr), line.data(), 1.0f, nullptr, 0.0f, 0, 3);
         CHECK(s.pickSlice[0] == 3.0f);
         CHECK(s.pixels[0].w == 0.75f);
         CHECK(s.pixels[1] == stopped);

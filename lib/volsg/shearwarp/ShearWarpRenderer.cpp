@@ -454,7 +454,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     const int threads =
         std::clamp(view.threads > 0 ? view.threads : int(hardware), 1, std::max(1, H / 4));
     bands_.resize(std::size_t(threads));
-    const UnderKernel underKernel = UnderComposite::best();
+    const SimdLevel simd = bestSimdLevel();
     // --- Compositing, one band of intermediate rows per thread ------------------------------
     const InterObjectCompositing inter = view.interObject;
     auto flush = [&](std::size_t p) {
@@ -781,8 +781,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                                       std::int16_t(oi),
                                                       float(k),
                                                       zSlice};
-                                UnderComposite::composite(underKernel, target, pa, wa, pb, wb, lo,
-                                                          hi);
+                                UnderComposite::composite(simd, target, pa, wa, pb, wb, lo, hi);
                                 if (pb && bLo < bHi)
                                     std::memset(static_cast<void*>(pb + bLo), 0,
                                                 std::size_t(bHi - bLo) * sizeof(glm::vec4));

@@ -1,6 +1,5 @@
 #include <volsg/shearwarp/UnderComposite.h>
 
-#include <cstdlib>
 #include <cstring>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -136,62 +135,37 @@ template <bool HasA, bool HasB>
     if (c < hi) underPixel<HasA, HasB, false>(local, a, wa, b, wb, c);
 }
 
-bool cpuHasAvx2() {
-    static const bool has = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") != 0;
-    }();
-    return has;
-}
 #endif
 
 template <bool HasA, bool HasB>
-void dispatch(UnderKernel kernel, const UnderRow& row, const glm::vec4* a, float wa,
+void dispatch(SimdLevel level, const UnderRow& row, const glm::vec4* a, float wa,
               const glm::vec4* b, float wb, int lo, int hi) {
     if (row.limit) {
         underScalar<HasA, HasB, true>(row, a, wa, b, wb, lo, hi);
         return;
     }
 #ifdef VOLSG_UNDER_AVX2
-    if (kernel == UnderKernel::Avx2) {
+    if (level == SimdLevel::Avx2) {
         underAvx2<HasA, HasB>(row, a, wa, b, wb, lo, hi);
         return;
     }
 #else
-    (void)kernel;
+    (void)level;
 #endif
     underScalar<HasA, HasB, false>(row, a, wa, b, wb, lo, hi);
 }
 
 } // namespace
 
-bool UnderComposite::available(UnderKernel kernel) {
-    if (kernel == UnderKernel::Scalar) return true;
-#ifdef VOLSG_UNDER_AVX2
-    return cpuHasAvx2();
-#else
-    return false;
-#endif
-}
-
-UnderKernel UnderComposite::best() {
-    static const UnderKernel kernel = [] {
-        const char* off = std::getenv("VOLSG_NO_AVX2");
-        if (off && std::strcmp(off, "1") == 0) return UnderKernel::Scalar;
-        return available(UnderKernel::Avx2) ? UnderKernel::Avx2 : UnderKernel::Scalar;
-    }();
-    return kernel;
-}
-
-void UnderComposite::composite(UnderKernel kernel, const UnderRow& row, const glm::vec4* a,
-                               float wa, const glm::vec4* b, float wb, int lo, int hi) {
-    if (!available(kernel)) kernel = UnderKernel::Scalar;
+void UnderComposite::composite(SimdLevel level, const UnderRow& row, const glm::vec4* a, float wa,
+                               const glm::vec4* b, float wb, int lo, int hi) {
+    if (!simdLevelAvailable(level)) level = SimdLevel::Scalar;
     if (a && b)
-        dispatch<true, true>(kernel, row, a, wa, b, wb, lo, hi);
+        dispatch<true, true>(level, row, a, wa, b, wb, lo, hi);
     else if (a)
-        dispatch<true, false>(kernel, row, a, wa, b, wb, lo, hi);
+        dispatch<true, false>(level, row, a, wa, b, wb, lo, hi);
     else if (b)
-        dispatch<false, true>(kernel, row, a, wa, b, wb, lo, hi);
+        dispatch<false, true>(level, row, a, wa, b, wb, lo, hi);
 }
 
 } // namespace volsg

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <volsg/shearwarp/SimdLevel.h>
+
 namespace volsg {
 
 /// One intermediate row of a pure DVR frame and what compositing into it updates.
@@ -20,26 +22,17 @@ struct UnderRow {
     float slice, zSlice;
 };
 
-/// Implementations of one definition: every kernel gives the same pixels bit for bit.
-enum class UnderKernel {
-    Scalar, ///< one pixel a step (SSE: one vec4 per instruction)
-    Avx2,   ///< two pixels a step (AVX2), when the CPU has it
-};
-
 struct UnderComposite {
     static constexpr float kOpaque = 0.999f;   ///< a pixel this opaque takes no more samples
     static constexpr float kPickAlpha = 0.02f; ///< a sample this opaque is what a click hits
-
-    /// The fastest kernel this CPU runs (Scalar when the environment sets VOLSG_NO_AVX2=1).
-    static UnderKernel best();
-    static bool available(UnderKernel kernel);
 
     /// Composites the samples wa * a[c] + wb * b[c] (a or b may be null: absent) under the
     /// row's pixels for c in [lo, hi). A pixel whose alpha is already >= kOpaque takes nothing
     /// and is linked past (open[c] = c + 1) the first time it is met; a sample of alpha <= 0
     /// or behind the opaque limit is skipped; the first sample of alpha >= kPickAlpha at a
-    /// pixel records the row's object and slice. The lines are only read.
-    static void composite(UnderKernel kernel, const UnderRow& row, const glm::vec4* a, float wa,
+    /// pixel records the row's object and slice. The lines are only read. Every level gives the
+    /// same pixels bit for bit.
+    static void composite(SimdLevel level, const UnderRow& row, const glm::vec4* a, float wa,
                           const glm::vec4* b, float wb, int lo, int hi);
 };
 

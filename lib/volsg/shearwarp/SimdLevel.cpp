@@ -1,0 +1,30 @@
+#include <volsg/shearwarp/SimdLevel.h>
+
+#include <cstdlib>
+#include <cstring>
+
+namespace volsg {
+
+bool simdLevelAvailable(SimdLevel level) {
+    if (level == SimdLevel::Scalar) return true;
+#if defined(__x86_64__) || defined(__i386__)
+    static const bool avx2 = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
+    return avx2;
+#else
+    return false;
+#endif
+}
+
+SimdLevel bestSimdLevel() {
+    static const SimdLevel level = [] {
+        const char* off = std::getenv("VOLSG_NO_AVX2");
+        if (off && std::strcmp(off, "1") == 0) return SimdLevel::Scalar;
+        return simdLevelAvailable(SimdLevel::Avx2) ? SimdLevel::Avx2 : SimdLevel::Scalar;
+    }();
+    return level;
+}
+
+} // namespace volsg
