@@ -68,17 +68,19 @@ const char* usage =
     "  --reference   also renders frame K with the reference ray caster (tolerance T, default\n"
     "                1e-3) and prints RMSE, PSNR and max abs error of VolPack's frame\n"
     "  --shearwarp   also renders the same views with volsg's ShearWarpVolume (one WHOLE\n"
-    "                object, TF mode, DVR: shearwarp-CASE.iv), alternating frame by frame with\n"
-    "                VolPack, and prints both medians, the ratio and (with --reference) both\n"
-    "                errors; for the node: the whole frame (GL side and the image read back\n"
-    "                included), the process CPU per frame, and the engine alone\n"
+    "                object, DVR, TF mode or SHADED for ml-shaded: shearwarp-CASE.iv),\n"
+    "                alternating frame by frame with VolPack, and prints both medians, the\n"
+    "                ratio and (with --reference) both errors; for the node: the whole frame\n"
+    "                (GL side and the image read back included), the process CPU per frame,\n"
+    "                and the engine alone\n"
     "                (ShearWarpRenderer::render: wall time and CPU summed over its threads)\n"
     "  --slice-step  the node composites every N-th slice (opacity-corrected; its interactive\n"
     "                setting, interactiveSliceStep N), for a comparison at equal error\n"
     "  --compare     prints RMSE, PSNR and max abs error (RGB) of one PFM against another\n"
     "  cases: sphere     soft sphere 256^3, 1.4M voxels visible (8%), grey DVR, unshaded\n"
     "         ml         Marschner-Lobb 256^3, smooth colour transfer function, unshaded\n"
-    "         ml-shaded  the same volume and opacity, VolPack's Phong shading (no reference)\n";
+    "         ml-shaded  the same volume and opacity, Phong shading by a headlight (VolPack's\n"
+    "                    vpShadeTable; the node's SHADED mode; timed, no reference)\n";
 
 struct Settings {
     std::vector<std::string> cases;
@@ -100,6 +102,9 @@ struct Case {
     std::string description;
     std::string sceneText;
     bool shaded = false;
+    /// The ShearWarpVolume's transfer function when it differs from the scene's (shaded: the
+    /// colour ramp over the shading intensity that gives VolPack's material colour).
+    std::string shearWarpTransferFunction;
 };
 
 std::string number(double v) {
@@ -136,7 +141,7 @@ std::vector<Case> makeCases(int side) {
              "  TransferFunction { red [ 0 0, 0.4 0.2, 1 1 ] green [ 0 0, 0.4 0.2, 1 1 ] "
              "blue [ 0 0, 0.4 0.2, 1 1 ] alpha [ 0 0, 0.399 0, 0.4 0.004, 1 0.05 ] }\n"
              "  Volume { }\n}\n",
-         false});
+         false, ""});
     // Marschner-Lobb with the volume suite's smooth transfer function (its opacity given for
     // 64^3, converted to this side so the optical depth is the same).
     const double alpha = 1.0 - std::pow(1.0 - 0.06, 64.0 / double(side));
@@ -151,8 +156,15 @@ std::vector<Case> makeCases(int side) {
                            "blue [ 0 1, 0.5 0.4, 1 0.1 ]\n"
                            "    alpha [ 0 0, 1 " +
                            number(alpha) + " ]\n  }\n  Volume { }\n}\n";
-    cases.push_back({"ml", "Marschner-Lobb " + n + "^3, smooth TF, unshaded", ml, false});
-    cases.push_back({"ml-shaded", "Marschner-Lobb " + n + "^3, VolPack Phong shading", ml, true});
+    cases.push_back({"ml", "Marschner-Lobb " + n + "^3, smooth TF, unshaded", ml, false, ""});
+    // Shaded, the ShearWarpVolume reads the colour channels as a ramp over the Phong intensity
+    // (RTVR's LUT3): black to VolPack's material colour, with the same opacity.
+    const glm::dvec3 material = volpack::Shading{}.materialColor;
+    const std::string shadedTf = "    TransferFunction { red [ 0 0, 1 " + number(material.r) +
+                                 " ] green [ 0 0, 1 " + number(material.g) + " ] blue [ 0 0, 1 " +
+                                 number(material.b) + " ] alpha [ 0 0, 1 " + number(alpha) +
+                                 " ] }\n";
+    cases.push_back({"ml-shaded", "Marschner-Lobb " + n + "^3, Phong shading", ml, true, shadedTf});
     return cases;
 }
 
@@ -194,6 +206,7 @@ void runCase(const Case& c, const Settings& st) {
 
     volpack::Shading shading;
     shading.enabled = c.shaded;
+    shading.lightDirection = glm::dvec3(0.0, 0.0, 1.0); // a headlight, as the ShearWarpVolume's
     std::unique_ptr<volpack::Renderer> renderer;
     const double classifyMs = bench::timeMs([&] {
         renderer = std::make_unique<volpack::Renderer>(*volume.data, classify(volume), shading);
@@ -207,13 +220,14 @@ void runCase(const Case& c, const Settings& st) {
     std::unique_ptr<volsg::Renderer> glRenderer;
     ref_ptr<Node> swRoot;
     ShearWarpVolume* swNode = nullptr;
-    if (st.shearWarp && !c.shaded) {
+    if (st.shearWarp) {
         std::string text = c.sceneText;
         const std::string volumeNode = "  Volume { }\n";
         text.replace(text.find(volumeNode), volumeNode.size(),
                      "  ShearWarpVolume { interactiveSliceStep " + std::to_string(st.sliceStep) +
-                         " VolumeObject { source WHOLE voxels VISIBLE renderMode TF "
-                         "compositing DVR } }\n");
+                         "\n" + c.shearWarpTransferFunction +
+                         "    VolumeObject { source WHOLE voxels VISIBLE renderMode " +
+                         (c.shaded ? "SHADED" : "TF") + " compositing DVR }\n  }\n");
         const std::filesystem::path swPath = st.out / ("shearwarp-" + c.name + ".iv");
         std::ofstream(swPath) << text;
         swRoot = readScene(swPath.string());
