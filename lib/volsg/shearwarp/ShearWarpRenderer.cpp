@@ -14,6 +14,7 @@
 #include <utility>
 
 #include <volsg/core/Error.h>
+#include <volsg/shearwarp/Lanes4.h>
 #include <volsg/shearwarp/PackedVoxel.h>
 #include <volsg/shearwarp/UnderComposite.h>
 #include <volsg/shearwarp/VoxelTables.h>
@@ -55,20 +56,10 @@ template <class F> void parallelFor(WorkerPool& pool, int count, F body) {
     });
 }
 
-/// Four floats in one SSE/NEON register (GCC/Clang vector extension, no -march needed): the
-/// same IEEE operations per component as glm::vec4's, done at once, so images stay bit for bit.
-using V4 = float __attribute__((vector_size(16)));
-inline V4 loadV4(const glm::vec4& v) {
-    V4 r;
-    std::memcpy(&r, &v, sizeof r);
-    return r;
-}
-inline void storeV4(glm::vec4& d, V4 v) {
-    std::memcpy(&d, &v, sizeof v);
-}
-inline glm::vec4 toVec4(V4 v) {
-    return glm::vec4(v[0], v[1], v[2], v[3]);
-}
+using lanes::loadV4;
+using lanes::storeV4;
+using lanes::toVec4;
+using lanes::V4;
 
 bool isOrthographic(const glm::dmat4& p) {
     return p[0][3] == 0.0 && p[1][3] == 0.0 && p[2][3] == 0.0 && p[3][3] == 1.0;

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include <volsg/shearwarp/Lanes4.h>
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #define VOLSG_UNDER_AVX2 1
@@ -14,17 +16,9 @@ namespace {
 constexpr float kOpaque = UnderComposite::kOpaque;
 constexpr float kPickAlpha = UnderComposite::kPickAlpha;
 
-/// Four floats in one SSE/NEON register (GCC/Clang vector extension): the same IEEE operations
-/// per component as glm::vec4's, done at once.
-using V4 = float __attribute__((vector_size(16)));
-inline V4 loadV4(const glm::vec4& v) {
-    V4 r;
-    std::memcpy(&r, &v, sizeof r);
-    return r;
-}
-inline void storeV4(glm::vec4& d, V4 v) {
-    std::memcpy(&d, &v, sizeof v);
-}
+using lanes::loadV4;
+using lanes::storeV4;
+using lanes::V4;
 
 /// Pixel c of the row: the definition every kernel follows.
 template <bool HasA, bool HasB, bool HasLimit>
