@@ -24,9 +24,7 @@ namespace volsg {
 namespace {
 
 constexpr float kPickAlpha =
-    UnderComposite::kPickAlpha; // a sample this opaque is what a click hits
-constexpr float kOpaque =
-    UnderComposite::kOpaque;                // pure DVR: a pixel this opaque takes no more samples
+    UnderComposite::kPickAlpha;             // a sample this opaque is what a click hits
 constexpr float kSurfaceAlpha = 0.5f;       // a Surface run this opaque is drawn opaque
 constexpr float kSurfaceDepthAlpha = 0.25f; // a Surface sample this opaque may give the depth
 // Bands of intermediate rows per thread. Measured (sphere, 2 threads, alternating runs): with 3
