@@ -612,7 +612,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                     const std::uint16_t* values = list.value12.data();
 
                     // One resampled sample of this object's slice composited at band pixel p
-                    // (two-level compositing; pure DVR has compositeUnder).
+                    // (two-level compositing; pure DVR has UnderComposite).
                     auto compositePixel = [&](std::size_t p, const glm::vec4& sample) {
                         if (hasLimit && !(zSlice > limit_[p])) return; // behind opaque geometry
                         if (localObject_[p] != std::int16_t(oi)) {
@@ -732,34 +732,24 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                             const int lo = std::min(a ? a->lo : W, b ? b->lo : W);
                             const int hi = std::max(a ? a->hi : 0, b ? b->hi : 0);
                             glm::vec4* pb = b ? b->px : nullptr;
-                            const int bLo = b ? b->lo : 0, bHi = b ? b->hi : 0; // b's writes
-                            if (b) {
+                            // Line b is done with after this row: zeros where it was written
+                            // (one memset, not a store per pixel), then empty.
+                            auto clearB = [&] {
+                                if (!b) return;
+                                if (b->lo < b->hi)
+                                    std::memset(static_cast<void*>(pb + b->lo), 0,
+                                                std::size_t(b->hi - b->lo) * sizeof(glm::vec4));
                                 b->lo = std::numeric_limits<int>::max();
                                 b->hi = 0;
-                            }
+                            };
                             if (row < 0 || row >= bandRows || lo >= hi) {
-                                if (pb)
-                                    for (int c = lo; c < hi; ++c)
-                                        storeV4(pb[c], V4{});
+                                clearB();
                                 return;
                             }
                             touch(row + r0, lo, hi);
                             const std::size_t rowStart =
                                 (std::size_t(row) + std::size_t(r0)) * std::size_t(W);
                             const glm::vec4* pa = a ? a->px : nullptr;
-                            // The resampled sample at column c (and line b cleared there); the
-                            // sum of the weighted lines as glm computed it, component by component.
-                            auto sampleAt = [&](int c) {
-                                if (pa && pb) {
-                                    const V4 sample = wa * loadV4(pa[c]) + wb * loadV4(pb[c]);
-                                    storeV4(pb[c], V4{});
-                                    return sample;
-                                }
-                                if (pa) return wa * loadV4(pa[c]);
-                                const V4 sample = wb * loadV4(pb[c]);
-                                storeV4(pb[c], V4{});
-                                return sample;
-                            };
                             if (pureDvr) { // the hot path: front to back ("under")
                                 const UnderRow target{global_.data() + rowStart,
                                                       frame.pickObject.data() + rowStart,
@@ -771,16 +761,19 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                                       float(k),
                                                       zSlice};
                                 UnderComposite::composite(simd, target, pa, wa, pb, wb, lo, hi);
-                                if (pb && bLo < bHi)
-                                    std::memset(static_cast<void*>(pb + bLo), 0,
-                                                std::size_t(bHi - bLo) * sizeof(glm::vec4));
-                                return;
+                            } else {
+                                // The resampled sample, as glm computes the sum of the weighted
+                                // lines, component by component.
+                                for (int c = lo; c < hi; ++c) {
+                                    const V4 sample = pa && pb
+                                                          ? wa * loadV4(pa[c]) + wb * loadV4(pb[c])
+                                                      : pa ? wa * loadV4(pa[c])
+                                                           : wb * loadV4(pb[c]);
+                                    if (sample[3] <= 0.0f) continue;
+                                    compositePixel(rowStart + std::size_t(c), toVec4(sample));
+                                }
                             }
-                            for (int c = lo; c < hi; ++c) {
-                                const V4 sample = sampleAt(c);
-                                if (sample[3] <= 0.0f) continue;
-                                compositePixel(rowStart + std::size_t(c), toVec4(sample));
-                            }
+                            clearB();
                         };
 
                         while (at[0] < end[0] || at[1] < end[1]) {
@@ -933,11 +926,6 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                     }
                                     at[part] = i;
                                 };
-                                // Part 0 writes into the empty line: the share a voxel gives its
-                                // right column waits in `pending` until the next voxel adds its own
-                                // share (0 + x + y, as accumulating in the line would give) or a
-                                // gap stores it; no voxel reloads what the previous one stored.
-                                // Part 1 adds onto part 0's shares in the line.
                                 auto withKind = [&](auto freshTag, auto ertTag) {
                                     if (mip)
                                         splat(freshTag, ertTag, std::integral_constant<int, 0>{});
