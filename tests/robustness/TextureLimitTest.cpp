@@ -1,10 +1,8 @@
 // A volume larger than GL_MAX_3D_TEXTURE_SIZE is bricked, never truncated. The GL here allows
-// 2048, so the test lowers the limit through the slicer's hook (VOLSG_MAX_3D_TEXTURE_SIZE) to
+// 2048, so the test lowers the limit through RenderDebug::max3DTextureSize to
 // 8 texels and checks that the bricks obey it and the image still matches the reference ray
 // caster (which samples the whole grid in double precision).
 #include <doctest/doctest.h>
-
-#include <cstdlib>
 
 #include "slicing/SlicingTestSupport.h"
 
@@ -19,18 +17,6 @@ double shell(const glm::dvec3& p) {
     const double r = glm::length(p);
     return std::clamp(1.0 - 4.0 * std::abs(r - 0.6), 0.0, 1.0) * (0.6 + 0.4 * p.x * p.x);
 }
-
-/// Sets an environment variable for its lifetime.
-class ScopedEnvironment {
-public:
-    ScopedEnvironment(const char* name, const char* value) : name_(name) {
-        ::setenv(name, value, 1);
-    }
-    ~ScopedEnvironment() { ::unsetenv(name_); }
-
-private:
-    const char* name_;
-};
 
 } // namespace
 
@@ -47,9 +33,11 @@ TEST_CASE("a volume beyond the 3D texture size limit is bricked and matches the 
         whole = compareGrid(renderer, volume, SlicingSettings{}, *camera, 64);
     }
     {
-        const ScopedEnvironment limit("VOLSG_MAX_3D_TEXTURE_SIZE", "8");
-        Renderer renderer; // a new cache: the limit is read once per cache
-        limited = compareGrid(renderer, volume, SlicingSettings{}, *camera, 64);
+        RenderDebug debug;
+        debug.max3DTextureSize = 8;
+        Renderer renderer;
+        limited = compareGrid(renderer, volume, SlicingSettings{}, *camera, 64, glm::vec3(0.0f),
+                              false, debug);
     }
     MESSAGE("bricks " << limited.stats.brickGrid.x << "x" << limited.stats.brickGrid.y << "x"
                       << limited.stats.brickGrid.z << ", largest texture "

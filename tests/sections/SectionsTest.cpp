@@ -25,6 +25,7 @@
 #include <volsg/sections/SliceSampler.h>
 #include <volsg/state/State.h>
 #include <volsg/volumescene/ReferenceScene.h>
+#include <volsg/volumescene/VolumeInScope.h>
 
 using namespace volsg;
 using namespace volsg::test;
@@ -51,14 +52,14 @@ struct SliceScene {
         root->addChild(transfer);
     }
     /// The slice's volume as the node sees it (state at the end of the root's children).
-    SliceVolume volume() const {
+    VolumeInScope volume() const {
         State state;
         for (const auto& child : *root->children())
             if (child->isA<Transform>())
                 state.multModelMatrix(static_cast<const Transform&>(*child).matrix());
             else if (child->isA<VolumeData>() || child->isA<TransferFunction>())
                 state.add(*child);
-        auto v = SliceVolume::fromState(state);
+        auto v = gatherVolumeInScope(state);
         REQUIRE(v);
         return *v;
     }
@@ -85,7 +86,7 @@ struct PixelComparison {
 /// (alpha 1 uses), blended over the background (ALPHA_AS_IS), or the background (discarded).
 /// Pixels within `margin` of the polygon's rim, and with `skipCellFaces` those within 1e-3
 /// voxels of a cell face (where NEAREST and tags switch voxel), are left out.
-PixelComparison compareSlice(const Image& gl, const Camera& camera, const SliceVolume& volume,
+PixelComparison compareSlice(const Image& gl, const Camera& camera, const VolumeInScope& volume,
                              const SlicePlane& plane, const SliceStyle& style,
                              bool skipCellFaces = false, double margin = 0.01) {
     const RayCastCamera rays = rayCamera(camera, gl.width, gl.height);
@@ -131,7 +132,7 @@ PixelComparison compareSlice(const Image& gl, const Camera& camera, const SliceV
 /// Renders `root` at 64 x 64 and compares its slice pixels (compareSlice), reporting the
 /// comparison as a MESSAGE; the image is kept as `name` (keepImage).
 PixelComparison renderAndCompare(Renderer& renderer, Node& root, Camera& camera,
-                                 const SliceVolume& volume, const SlicePlane& plane,
+                                 const VolumeInScope& volume, const SlicePlane& plane,
                                  const SliceStyle& style, const std::string& name,
                                  bool skipCellFaces = false) {
     const Image gl = render(renderer, root, camera, 64);
@@ -159,7 +160,7 @@ TEST_CASE("orthoslice pixels equal double precision sampling of the same world p
     slice->sliceNumber = 13;
     slice->alphaUse = OrthoSlice::ALPHA_OPAQUE;
     scene.root->addChild(slice);
-    const SliceVolume volume = scene.volume();
+    const VolumeInScope volume = scene.volume();
     auto camera = framing(*volume.data, {0.4f, 1.0f, 0.7f});
     for (int interpolation : {OrthoSlice::LINEAR, OrthoSlice::NEAREST}) {
         slice->interpolation = interpolation;
@@ -189,7 +190,7 @@ TEST_CASE("the sampler replaces non-finite float voxels by the finite extremes")
     other->setValue(0, 0, 0, -2.0);
     other->setValue(1, 0, 0, std::numeric_limits<double>::infinity());
     other->setValue(2, 0, 0, 6.0);
-    SliceVolume volume;
+    VolumeInScope volume;
     volume.data = grid;
     const SliceSampler sampler(volume, SliceStyle{true, SliceAlphaUse::Opaque});
     // NaN becomes the finite minimum (4), so the data is 4 everywhere, not NaN.
@@ -219,7 +220,7 @@ TEST_CASE("obliqueslice is trilinear with anisotropic spacing under a transform"
     slice->plane = Plane{glm::vec3(1.0f, 2.0f, 3.0f), 4.0f};
     slice->alphaUse = OrthoSlice::ALPHA_OPAQUE;
     scene.root->addChild(slice);
-    const SliceVolume volume = scene.volume();
+    const VolumeInScope volume = scene.volume();
     auto camera = framing(*volume.data, {0.3f, -0.5f, 1.0f}, 2.2f);
     camera->position = camera->position.getValue() + glm::vec3(2.0f, -1.0f, 0.5f);
     const PixelComparison c = renderAndCompare(renderer, *scene.root, *camera, volume,
@@ -239,7 +240,7 @@ TEST_CASE("a 16-bit slice matches within the transfer table resolution") {
     slice->sliceNumber = 7;
     slice->alphaUse = OrthoSlice::ALPHA_OPAQUE;
     scene.root->addChild(slice);
-    const SliceVolume volume = scene.volume();
+    const VolumeInScope volume = scene.volume();
     REQUIRE(volume.data->type() == VoxelType::UShort);
     auto camera = framing(*volume.data, {0.2f, 0.3f, 1.0f});
     const PixelComparison c =
@@ -260,7 +261,7 @@ TEST_CASE("a float slice matches with the data's own range") {
     slice->plane = Plane{glm::vec3(0.2f, -0.3f, 1.0f), 1.5f};
     slice->alphaUse = OrthoSlice::ALPHA_OPAQUE;
     scene.root->addChild(slice);
-    const SliceVolume volume = scene.volume();
+    const VolumeInScope volume = scene.volume();
     REQUIRE(volume.data->type() == VoxelType::Float);
     auto camera = framing(*volume.data, {0.1f, -0.2f, 1.0f});
     const PixelComparison c = renderAndCompare(renderer, *scene.root, *camera, volume,
@@ -289,7 +290,7 @@ TEST_CASE("a tagged slice uses the transfer function of each voxel's tag") {
     slice->sliceNumber = 12;
     slice->interpolation = OrthoSlice::NEAREST;
     scene.root->addChild(slice); // ALPHA_BINARY: tag 3 has alpha 0 and is discarded
-    const SliceVolume volume = scene.volume();
+    const VolumeInScope volume = scene.volume();
     REQUIRE(volume.tags);
     auto camera = framing(*volume.data, {0.1f, 1.0f, 0.3f});
     const PixelComparison c = renderAndCompare(renderer, *scene.root, *camera, volume,
@@ -310,7 +311,7 @@ TEST_CASE("alpha binary discards transparent pixels and alpha as is blends over 
     auto slice = OrthoSlice::create();
     slice->sliceNumber = 11;
     scene.root->addChild(slice);
-    const SliceVolume volume = scene.volume();
+    const VolumeInScope volume = scene.volume();
     auto camera = framing(*volume.data, {0.0f, 0.4f, 1.0f});
     const SlicePlane plane = SlicePlane::orthogonal(*volume.data, 2, 11);
     for (int use : {OrthoSlice::ALPHA_BINARY, OrthoSlice::ALPHA_AS_IS}) {
@@ -416,7 +417,7 @@ TEST_CASE("picking a slice reports the voxel index and the data value there") {
     auto slice = OrthoSlice::create();
     slice->sliceNumber = 6;
     scene.root->addChild(slice);
-    const SliceVolume volume = scene.volume();
+    const VolumeInScope volume = scene.volume();
     const VolumeGrid& grid = *volume.data;
     // A ray straight down -Z through the centre of voxel (3, 15) of slice 6, nudged inside
     // the cell so the nearest voxel is unambiguous.
@@ -448,7 +449,7 @@ TEST_CASE("a pick misses a slice where it is discarded and hits the nearer of sl
     auto slice = OrthoSlice::create();
     slice->sliceNumber = 8;
     scene.root->addChild(slice);
-    const SliceVolume volume = scene.volume();
+    const VolumeInScope volume = scene.volume();
     const SliceSampler sampler(volume, slice->style());
     const double z = volume.data->voxelCenter(0, 0, 8).z;
     const glm::dvec3 corner = volume.data->voxelCenter(0, 0, 8); // low data

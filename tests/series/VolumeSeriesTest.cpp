@@ -269,29 +269,30 @@ std::string textureSeriesScene(int step) {
 TEST_CASE("a staged texture upload renders the same image as a direct one, bit for bit") {
     // Whole volume in one texture, and bricked (the slicer's texture-size hook: 32^3 in 12^3
     // textures), so the staged buffer's per-brick offsets are exercised too.
-    for (const char* limit : {"", "12"}) {
+    for (const int limit : {0, 12}) {
         CAPTURE(limit);
-        if (*limit) ::setenv("VOLSG_MAX_3D_TEXTURE_SIZE", limit, 1);
+        RenderOptions options = smallOptions();
+        options.debug.max3DTextureSize = limit;
         OSMesaContext context;
         Renderer renderer;
         const ref_ptr<Node> root = readSceneFromString(textureSeriesScene(0));
         auto* series = findNode<VolumeSeries>(*root);
         auto* volume = findNode<Volume>(*root);
-        renderer.render(*root, smallOptions()); // step 0, uploaded directly
+        renderer.render(*root, options); // step 0, uploaded directly
         CHECK(volume->slicingStats().stagedUploads == 0u);
         for (int step = 1; step <= 2; ++step) {
             CAPTURE(step);
-            series->cache().waitUntilIdle();        // the next step's grid is prefetched
-            renderer.render(*root, smallOptions()); // ... and staged after this frame
+            series->cache().waitUntilIdle(); // the next step's grid is prefetched
+            renderer.render(*root, options); // ... and staged after this frame
             series->step = step;
-            const Image staged = renderer.render(*root, smallOptions());
+            const Image staged = renderer.render(*root, options);
             const SlicingStats& stats = volume->slicingStats();
             CHECK(stats.brickUploads >= 1u);
-            if (*limit) CHECK(stats.bricksTotal > 1);
+            if (limit) CHECK(stats.bricksTotal > 1);
             CHECK(stats.stagedUploads == stats.brickUploads); // every upload came from the buffer
             // ... into the last step's textures (same layout): whole, none was allocated
             // anew; bricked, as many as the last step had non-empty bricks of each size.
-            if (*limit) {
+            if (limit) {
                 CHECK(stats.refilledTextures > 0u);
                 CHECK(stats.refilledTextures <= stats.brickUploads);
             } else {
@@ -301,13 +302,12 @@ TEST_CASE("a staged texture upload renders the same image as a direct one, bit f
             // The same step in a fresh renderer: its first frame uploads directly.
             Renderer freshRenderer;
             const ref_ptr<Node> freshRoot = readSceneFromString(textureSeriesScene(step));
-            const Image direct = freshRenderer.render(*freshRoot, smallOptions());
+            const Image direct = freshRenderer.render(*freshRoot, options);
             CHECK(findNode<Volume>(*freshRoot)->slicingStats().stagedUploads == 0u);
             CHECK(findNode<Volume>(*freshRoot)->slicingStats().refilledTextures == 0u);
             CHECK(findNode<Volume>(*freshRoot)->slicingStats().brickUploads == stats.brickUploads);
             CHECK(centroidX(staged) > 0.0);              // the sphere is in the image
             CHECK(maxDifference(staged, direct) == 0.0); // bit for bit
         }
-        if (*limit) ::unsetenv("VOLSG_MAX_3D_TEXTURE_SIZE");
     }
 }

@@ -35,14 +35,23 @@ public:
     std::uint64_t transferKey = 1; ///< bump when description.transferFunctions change
     SlicingStats stats;
 
-    void render(RenderAction& action) override {
+    GridVolume() {
+        static const bool added = (RenderAction::methods().add(&render), true);
+        (void)added;
+    }
+
+    /// Its render method (RenderAction::methods()).
+    static void render(RenderAction& action, GridVolume& node) {
         if (action.pass() != RenderPass::Volume) return;
-        RayCastVolume v = description;
-        v.model = action.state().modelMatrix() * description.model;
+        RayCastVolume v = node.description;
+        v.model = action.state().modelMatrix() * node.description.model;
+        v.transferKey = node.transferKey;
         std::vector<glm::dvec4> planes;
         action.clipPlanesInScope(planes);
         v.clipPlanes.insert(v.clipPlanes.end(), planes.begin(), planes.end());
-        VolumeSlicer::draw(action, *this, v, transferKey, settings, stats);
+        std::vector<SceneLight> lights;
+        action.lightsInScope(lights);
+        VolumeSlicer::draw(action.frame(), node, v, lights, node.settings, node.stats);
     }
 };
 
@@ -214,7 +223,7 @@ struct Comparison {
 inline Comparison compareGrid(Renderer& renderer, const RayCastVolume& volume,
                               const SlicingSettings& settings, Camera& camera, int size,
                               const glm::vec3& background = glm::vec3(0.0f),
-                              bool interactive = false) {
+                              bool interactive = false, const RenderDebug& debug = {}) {
     auto root = Separator::create();
     auto node = GridVolume::create();
     node->description = volume;
@@ -225,6 +234,7 @@ inline Comparison compareGrid(Renderer& renderer, const RayCastVolume& volume,
     options.camera = ref_ptr<Camera>(&camera);
     options.background = background;
     options.interactive = interactive;
+    options.debug = debug;
     Comparison c;
     c.gl = renderer.render(*root, options);
     c.stats = node->stats;

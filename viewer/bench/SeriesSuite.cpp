@@ -105,18 +105,15 @@ double defaultBudget(const SeriesSuiteSettings& st, const RenderOptions& options
 }
 
 /// One run from an empty cache: cold steps, then three play-throughs.
-void runVariant(const SeriesSuiteSettings& st, const RenderOptions& options, double budget,
+void runVariant(const SeriesSuiteSettings& st, RenderOptions options, double budget,
                 SeriesNode node, bool improved) {
     const char* name = node == SeriesNode::ShearWarp
                            ? (improved ? "ShearWarpVolume, spill files with RenderLists (after)"
                                        : "ShearWarpVolume, spill files of arrays only (before)")
                            : (improved ? "Volume, uploads staged in a pixel buffer (after)"
                                        : "Volume, direct uploads (before)");
-    // The slicer's hook; the cache's setting.
-    if (node == SeriesNode::Volume && !improved)
-        ::setenv("VOLSG_NO_TEXTURE_STAGING", "1", 1);
-    else
-        ::unsetenv("VOLSG_NO_TEXTURE_STAGING");
+    // The slicer's debug switch; the cache's setting.
+    options.debug.textureStaging = !(node == SeriesNode::Volume && !improved);
     const ref_ptr<Node> root = readSceneFromString(seriesScene(st, budget, node));
     auto* series = static_cast<VolumeSeries*>(findByName(*root, "SERIES"));
     if (!series) throw Error("series suite scene has no SERIES node");
@@ -240,7 +237,6 @@ void runVariant(const SeriesSuiteSettings& st, const RenderOptions& options, dou
                 double(s.memoryHighWater) / 1048576.0, budget, double(s.memoryBytes) / 1048576.0,
                 double(s.gridHighWater) / 1048576.0, double(s.diskBytes) / 1048576.0,
                 peakRssMegabytes());
-    ::unsetenv("VOLSG_NO_TEXTURE_STAGING");
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include <volsg/nodes/Volume.h>
 #include <volsg/reference/ReferenceRayCaster.h>
 #include <volsg/volumescene/ReferenceScene.h>
+#include <volsg/volumescene/ShearWarpObjects.h>
 
 namespace volsg {
 
@@ -29,7 +30,7 @@ protected:
         if (node.isA<ShearWarpVolume>()) {
             std::optional<RayCastVolume> volume;
             try {
-                volume = static_cast<ShearWarpVolume&>(node).describeForReference(state());
+                volume = describeShearWarpVolume(static_cast<ShearWarpVolume&>(node), state());
             } catch (const std::exception&) {
                 // data that does not load is not drawn, so not picked
             }

@@ -45,7 +45,6 @@ Field* Node::field(std::string_view name) {
 }
 
 void Node::doAction(Action&) {}
-// Node::render, getBoundingBox and pick are defined beside their actions.
 
 Field::Field(Node* owner, const char* name) : owner_(owner), name_(name) {
     NodeType::recordField(owner, this, name);

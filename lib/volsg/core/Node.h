@@ -16,13 +16,12 @@ namespace volsg {
 
 class Action;
 class Field;
-class RenderAction;
-class BoundingBoxAction;
-class PickAction;
 struct ReadContext;
 
-/// A scene-graph node. Nodes hold fields and say what they do for each action; the heavy
-/// work lives in lib/ engines. Construct with `T::create()`, hold with `ref_ptr`.
+/// A scene-graph node. Nodes hold fields and do their state work (doAction); what a node
+/// type does in each action (draw, bound, pick) is that action's method for the type
+/// (ActionMethods), and the heavy work lives in lib/ engines. Construct with `T::create()`,
+/// hold with `ref_ptr`.
 ///
 /// Every field change bumps `version()`, drawn from one global counter, so caches built from
 /// a node (tables, textures, meshes) compare versions and rebuild lazily.
@@ -58,12 +57,9 @@ public:
     /// scene file's folder.
     virtual void readDone(const ReadContext& /*context*/) {}
 
-    // What the node does in each action. The specific hooks default to doAction(), which
-    // is where state-changing nodes (Transform, Material, ...) and groups act once for all.
+    /// What the node does in every action that has no method of its own for its type:
+    /// state-changing nodes (Transform, Material, ...) and groups act here once for all.
     virtual void doAction(Action& action);
-    virtual void render(RenderAction& action);
-    virtual void getBoundingBox(BoundingBoxAction& action);
-    virtual void pick(PickAction& action);
 
 protected:
     Node();

@@ -46,9 +46,7 @@ NodeRegistry& NodeRegistry::instance() {
     return registry;
 }
 
-NodeRegistry::NodeRegistry() {
-    registerBuiltinNodeTypes(*this);
-}
+NodeRegistry::NodeRegistry() = default;
 
 void NodeRegistry::add(const NodeType& type) {
     std::lock_guard lock(mutex_);

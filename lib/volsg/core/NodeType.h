@@ -48,8 +48,8 @@ private:
     mutable std::vector<FieldEntry> fields_;
 };
 
-/// Node types by name, for the reader. Built-in types are registered on first use;
-/// applications add their own with add().
+/// Node types by name, for the reader. The library's own types are added by the node layer
+/// (nodeTypes(), nodes/volsg/nodes/BuiltinNodes.h); applications add theirs with add().
 class NodeRegistry {
 public:
     static NodeRegistry& instance();
@@ -62,8 +62,5 @@ private:
     mutable std::mutex mutex_;
     std::vector<const NodeType*> types_;
 };
-
-/// Registers every node type of the library (defined in nodes/).
-void registerBuiltinNodeTypes(NodeRegistry& registry);
 
 } // namespace volsg

@@ -4,9 +4,6 @@
 #include <volsg/gltf/GltfGpuAsset.h>
 #include <volsg/gltf/GltfRenderer.h>
 #include <volsg/gltf/GltfShaders.h>
-#include <volsg/nodes/BoxClip.h>
-#include <volsg/nodes/Group.h>
-#include <volsg/nodes/Material.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,13 +14,6 @@
 namespace volsg {
 
 namespace {
-
-/// Names the per-context renderer in the Renderer's NodeCache, which keys entries by node:
-/// this node is never part of a scene.
-const Node& rendererCacheKey() {
-    static const ref_ptr<Group> key = Group::create();
-    return *key;
-}
 
 constexpr float kAmbientIntensity = 0.2f; // Inventor's default SoEnvironment
 
@@ -51,30 +41,27 @@ GltfRenderer::GltfRenderer() {
     program_.set("uAmbient", kAmbientIntensity);
 }
 
-GltfRenderer& GltfRenderer::of(RenderAction& action) {
-    return action.cache<GltfRenderer>(rendererCacheKey());
+GltfRenderer& GltfRenderer::of(FrameContext& frame) {
+    return frame.cache.shared<GltfRenderer>();
 }
 
-void GltfRenderer::submit(RenderAction& action, const GltfAsset& asset, const GltfGpuAsset& gpu) {
-    const RenderPass pass = action.pass();
+void GltfRenderer::submit(const FrameContext& frame, const GltfAsset& asset,
+                          const GltfGpuAsset& gpu, const GltfLook& look) {
+    const RenderPass pass = frame.pass;
     if (pass == RenderPass::Volume) return;
-    const State& state = action.state();
-    view_ = action.view();
+    view_ = frame.view;
 
     NodeState node;
-    if (const Material* m = state.nearestNode<Material>()) {
-        if (!m->emissiveColor.empty()) node.extraEmissive = m->emissiveColor[0];
-        if (!m->transparency.empty())
-            node.alphaScale = 1.0f - std::clamp(m->transparency[0], 0.0f, 1.0f);
-    }
-    if (const StateEntry* e = state.nearest<BoxClip>()) {
-        const auto& b = static_cast<const BoxClip&>(*e->node);
+    node.extraEmissive = look.extraEmissive;
+    node.alphaScale = 1.0f - std::clamp(look.transparency, 0.0f, 1.0f);
+    if (look.boxClip) {
+        const GltfBoxClip& b = *look.boxClip;
         node.boxClip = true;
-        node.boxFromWorld = glm::mat4(glm::inverse(e->model));
-        node.boxMin = glm::min(b.origin(), b.origin() + b.extent());
-        node.boxMax = glm::max(b.origin(), b.origin() + b.extent());
-        node.boxInside = std::max(b.insideOpacity(), 0.0f);
-        node.boxOutside = std::max(b.outsideOpacity(), 0.0f);
+        node.boxFromWorld = b.boxFromWorld;
+        node.boxMin = b.min;
+        node.boxMax = b.max;
+        node.boxInside = std::max(b.insideOpacity, 0.0f);
+        node.boxOutside = std::max(b.outsideOpacity, 0.0f);
         auto partial = [](float o) { return o > 0.0f && o < 1.0f; };
         if (partial(node.boxInside) || partial(node.boxOutside)) node.forceBlend = true;
     }
@@ -90,27 +77,25 @@ void GltfRenderer::submit(RenderAction& action, const GltfAsset& asset, const Gl
             if (!p.indices.empty() && blended(p) == (pass == RenderPass::Transparent)) any = true;
     if (!any) return;
 
-    action.lightsInScope(lightScratch_);
-    if (lightScratch_.size() > std::size_t(kMaxLights))
-        throw Error(std::to_string(lightScratch_.size()) +
+    if (look.lights.size() > std::size_t(kMaxLights))
+        throw Error(std::to_string(look.lights.size()) +
                     " lights are in scope of a GltfModel; at most " + std::to_string(kMaxLights) +
                     " light it");
-    node.lightCount = int(lightScratch_.size());
-    for (std::size_t i = 0; i < lightScratch_.size(); ++i) {
-        node.lightVectors[i] = lightScratch_[i].vector;
-        node.lightColors[i] = lightScratch_[i].color;
+    node.lightCount = int(look.lights.size());
+    for (std::size_t i = 0; i < look.lights.size(); ++i) {
+        node.lightVectors[i] = look.lights[i].vector;
+        node.lightColors[i] = look.lights[i].color;
     }
-    action.clipPlanesInScope(planeScratch_);
-    if (planeScratch_.size() > std::size_t(maxClipPlanes_))
-        throw Error(std::to_string(planeScratch_.size()) +
+    if (look.clipPlanes.size() > std::size_t(maxClipPlanes_))
+        throw Error(std::to_string(look.clipPlanes.size()) +
                     " ClipPlanes are in scope of a GltfModel, but this OpenGL clips with at most " +
                     std::to_string(maxClipPlanes_) + " (GL_MAX_CLIP_DISTANCES)");
-    node.clipPlaneCount = int(planeScratch_.size());
-    for (std::size_t i = 0; i < planeScratch_.size(); ++i)
-        node.clipPlanes[i] = glm::vec4(planeScratch_[i]);
+    node.clipPlaneCount = int(look.clipPlanes.size());
+    for (std::size_t i = 0; i < look.clipPlanes.size(); ++i)
+        node.clipPlanes[i] = glm::vec4(look.clipPlanes[i]);
 
-    ShapeRenderer& shapes = action.shapeRenderer();
-    const glm::dmat4& nodeModel = state.modelMatrix();
+    ShapeRenderer& shapes = frame.shapes;
+    const glm::dmat4& nodeModel = look.model;
     for (const GltfInstance& instance : asset.instances) {
         const glm::dmat4 model = nodeModel * instance.matrix;
         const double det = glm::determinant(glm::dmat3(model));
@@ -139,7 +124,7 @@ void GltfRenderer::submit(RenderAction& action, const GltfAsset& asset, const Gl
                 draw(shapes, node, item);
             } else {
                 const glm::dvec4 centre =
-                    action.viewMatrix() * model * glm::dvec4(primitive.bounds.center(), 1.0);
+                    frame.view.view * model * glm::dvec4(primitive.bounds.center(), 1.0);
                 shapes.queueTransparent(centre.z,
                                         [this, &shapes, node, item] { draw(shapes, node, item); });
             }

@@ -4,12 +4,14 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include <volsg/gl/Program.h>
-#include <volsg/render/RenderAction.h>
+#include <volsg/render/FrameContext.h>
 #include <volsg/render/ShapeRenderer.h>
 
 namespace volsg {
@@ -20,8 +22,25 @@ class GltfGpuAsset;
 struct GltfGpuPrimitive;
 class Texture;
 
-/// One per GL context (kept in the Renderer's NodeCache under a private key): the glTF
-/// program and its draws.
+/// A BoxClip as a glTF model sees it: the box [min, max] in coordinates that `boxFromWorld`
+/// maps world points to, and the opacity multipliers inside and outside it.
+struct GltfBoxClip {
+    glm::mat4 boxFromWorld{1.0f};
+    glm::vec3 min{0.0f}, max{0.0f};
+    float insideOpacity = 1.0f, outsideOpacity = 1.0f;
+};
+
+/// What a glTF model's surroundings do to it, gathered by the traversal from the state.
+struct GltfLook {
+    glm::dmat4 model{1.0};
+    glm::vec3 extraEmissive{0.0f}; ///< an Inventor Material's emissiveColor
+    float transparency = 0.0f;     ///< an Inventor Material's transparency
+    std::optional<GltfBoxClip> boxClip;
+    std::span<const SceneLight> lights;     ///< in scope (with the headlight), world
+    std::span<const glm::dvec4> clipPlanes; ///< world (a, b, c, d) keeping ax+by+cz >= d
+};
+
+/// One per GL context (RenderCache::shared): the glTF program and its draws.
 ///
 /// Passes: OPAQUE and MASK primitives draw in the Opaque pass with depth writes, so volumes
 /// drawn later stop at them per pixel; BLEND primitives (and every primitive when the Inventor
@@ -59,13 +78,14 @@ public:
     GltfRenderer(const GltfRenderer&) = delete;
     GltfRenderer& operator=(const GltfRenderer&) = delete;
 
-    /// The renderer of the action's context (created on first use).
-    static GltfRenderer& of(RenderAction& action);
+    /// The renderer of the frame's context (created on first use).
+    static GltfRenderer& of(FrameContext& frame);
 
     /// Draws (Opaque pass) or queues (Transparent pass) the asset's primitives that belong to
-    /// the current pass, with the state at the action's current node. Throws Error for more
-    /// lights or clip planes in scope than it can draw.
-    void submit(RenderAction& action, const GltfAsset& asset, const GltfGpuAsset& gpu);
+    /// the current pass, as `look` says. Throws Error for more lights or clip planes than it
+    /// can draw.
+    void submit(const FrameContext& frame, const GltfAsset& asset, const GltfGpuAsset& gpu,
+                const GltfLook& look);
 
 private:
     static constexpr int kMaxLights = ShapeRenderer::kMaxLights;
@@ -100,8 +120,6 @@ private:
 
     Program program_;
     int maxClipPlanes_ = 8;
-    std::vector<SceneLight> lightScratch_;
-    std::vector<glm::dvec4> planeScratch_;
     RenderView view_;
 };
 

@@ -2,21 +2,16 @@
 // The CPU reference ray caster: the image of SCENE-FORMAT.md section 4, to a known tolerance.
 // Every fast volume path measures its error against this one.
 
-#include <map>
 #include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
 
-#include <volsg/core/Object.h>
 #include <volsg/image/Image.h>
 #include <volsg/math/Ray.h>
-#include <volsg/volume/TransferFunction1D.h>
-#include <volsg/volume/VolumeGrid.h>
+#include <volsg/volume/VolumeModel.h>
 
 namespace volsg {
-
-enum class VolumeRenderMode { DVR, MIP, MINIP, AVERAGE };
 
 /// Where the rays come from. A pixel's ray goes through its centre (row 0 is the top row): the
 /// pixel centre is unprojected at NDC z = -1 and z = +1 and the ray runs along the line through
@@ -30,52 +25,6 @@ struct RayCastCamera {
     int width = 64;
     int height = 64;
     bool clipToNearFar = false;
-};
-
-/// SCENE-FORMAT.md section 3 BoxClip. The box [origin, origin + extent] is in the volume's
-/// local coordinates, or, when `model` is set, in coordinates that `model` maps to world.
-/// Inside the box tau is multiplied by insideOpacity and the colour is blended
-/// `mix(C, insideColor, insideColorWeight)`; outside likewise with the outside values. A
-/// multiplier of 0 removes that region (also for MIP, MINIP and AVERAGE).
-struct RayCastBoxClip {
-    glm::dvec3 origin{-0.5};
-    glm::dvec3 extent{1.0};
-    std::optional<glm::dmat4> model;
-    double insideOpacity = 1.0;
-    double outsideOpacity = 0.0;
-    glm::dvec3 insideColor{1.0};
-    double insideColorWeight = 0.0;
-    glm::dvec3 outsideColor{1.0};
-    double outsideColorWeight = 0.0;
-};
-
-/// One volume in the scene.
-///
-/// - The volume box is centred on the local origin with extent dimensions*spacing; voxel
-///   (i,j,k)'s centre is at -extent/2 + (i+0.5, j+0.5, k+0.5)*spacing. The data is trilinear
-///   between centres and clamped to the edge between the outermost centres and the box faces.
-///   Tags are nearest-neighbour (constant over each voxel's cell).
-/// - Non-finite voxels (Float data): before interpolation NaN and -Inf are replaced by the
-///   smallest finite value of the grid and +Inf by the largest (VolumeGrid::minMax()). With the
-///   default dataRange (the type's range, which for Float is that min..max) a NaN or -Inf voxel
-///   thus has v = 0 and a +Inf voxel v = 1, and interpolation near them stays finite.
-/// - `transferFunctions`: key -1 is the default for voxels without their own; key N >= 0
-///   applies to voxels tagged N. Without key -1 the default is the identity ramp. AVERAGE maps
-///   its mean v through the default one.
-/// - `planeOpacity`: (t, m) points, m multiplies tau; t = 0 at the nearest and t = 1 at the
-///   farthest point of the volume box along the camera's forward axis (the depths of the box's
-///   8 corners). Empty means m = 1. DVR only: the projection modes have no extinction.
-/// - `clipPlanes`: world (a, b, c, d) keeping a*x + b*y + c*z >= d; tau = 0 on the removed side,
-///   and MIP/MINIP/AVERAGE ignore the removed part.
-struct RayCastVolume {
-    ref_ptr<const VolumeGrid> data;
-    ref_ptr<const VolumeGrid> tags; ///< optional, UByte or UShort, same dimensions as data
-    glm::dmat4 model{1.0};          ///< local to world (affine, invertible)
-    std::map<int, TransferFunction1D> transferFunctions;
-    VolumeRenderMode mode = VolumeRenderMode::DVR;
-    std::vector<PiecewiseLinear::Point> planeOpacity;
-    std::optional<RayCastBoxClip> boxClip;
-    std::vector<glm::dvec4> clipPlanes;
 };
 
 /// What lies behind the volumes at each pixel: a colour, and optionally opaque geometry that

@@ -1,10 +1,6 @@
 #include <volsg/core/Error.h>
 #include <volsg/gl/Shader.h>
-#include <volsg/nodes/LightModel.h>
-#include <volsg/nodes/Material.h>
-#include <volsg/nodes/Shape.h>
 #include <volsg/render/GpuMesh.h>
-#include <volsg/render/RenderAction.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/render/ShapeShaders.h>
 
@@ -15,28 +11,10 @@
 
 namespace volsg {
 
-// A shape is drawn from its mesh, uploaded once per (node, mesh key) and kept in the
-// Renderer's NodeCache while the node is drawn.
-void Shape::render(RenderAction& action) {
-    if (action.pass() == RenderPass::Volume) return;
-    const State& state = action.state();
-    GpuMesh& gpu = action.cache<GpuMesh>(*this, meshKey(state));
-    if (!gpu.uploaded) action.shapeRenderer().upload(gpu, mesh(state));
-    action.shapeRenderer().submit(action, gpu);
-}
-
 namespace {
 
-// Inventor's SoMaterial defaults, used without a Material in scope or for an empty field.
-constexpr glm::vec3 kDefaultAmbient{0.2f}, kDefaultDiffuse{0.8f}, kDefaultSpecular{0.0f},
-    kDefaultEmissive{0.0f};
-constexpr float kDefaultShininess = 0.2f, kDefaultTransparency = 0.0f;
 /// Inventor's default SoEnvironment: white ambient light of intensity 0.2.
 constexpr float kAmbientIntensity = 0.2f;
-
-template <class F, class V> V firstOr(const F& field, V fallback) {
-    return field.empty() ? fallback : field[0];
-}
 
 /// The matrix that maps normals: the cofactor matrix of the model's 3x3 part. It is the
 /// inverse transpose times the determinant, so it keeps directions right (the shader
@@ -103,18 +81,18 @@ void ShapeRenderer::endFrame() {
     transparentQueue_.clear();
 }
 
-void ShapeRenderer::submit(RenderAction& action, const GpuMesh& gpu) {
+void ShapeRenderer::submit(const FrameContext& frame, const GpuMesh& gpu, const ShapeLook& look) {
     if (gpu.indexCount == 0) return;
-    const Material* material = action.state().nearestNode<Material>();
-    const float transparency =
-        material ? firstOr(material->transparency, kDefaultTransparency) : kDefaultTransparency;
-    const bool transparent = transparency > 0.0f || gpu.hasTranslucentColors;
-    if (action.pass() == RenderPass::Opaque && !transparent) {
+    const bool transparent = look.material.transparency > 0.0f || gpu.hasTranslucentColors;
+    if (frame.pass == RenderPass::Opaque && !transparent) {
         DrawItem item;
-        fill(action, gpu, item);
+        fill(gpu, look, item);
         draw(item);
-    } else if (action.pass() == RenderPass::Transparent && transparent) {
-        fill(action, gpu, transparentQueue_.emplace_back());
+    } else if (frame.pass == RenderPass::Transparent && transparent) {
+        DrawItem& item = transparentQueue_.emplace_back();
+        fill(gpu, look, item);
+        const glm::dvec4 centre = view_.view * look.model * glm::dvec4(gpu.bounds.center(), 1.0);
+        item.eyeDepth = gpu.bounds.isEmpty() ? 0.0 : centre.z;
     }
 }
 
@@ -124,61 +102,44 @@ void ShapeRenderer::queueTransparent(double eyeDepth, std::function<void()> draw
     item.external = std::move(draw);
 }
 
-void ShapeRenderer::fill(RenderAction& action, const GpuMesh& gpu, DrawItem& item) {
-    const State& state = action.state();
+void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& item) {
     item.mesh = &gpu;
-    const glm::dmat4& model = state.modelMatrix();
-    item.model = glm::mat4(model);
-    item.normalMatrix = normalMatrixOf(model);
-    const glm::dvec4 centre = action.viewMatrix() * model * glm::dvec4(gpu.bounds.center(), 1.0);
-    item.eyeDepth = gpu.bounds.isEmpty() ? 0.0 : centre.z;
-
-    if (const Material* m = state.nearestNode<Material>()) {
-        item.emissive = firstOr(m->emissiveColor, kDefaultEmissive);
-        item.ambient = firstOr(m->ambientColor, kDefaultAmbient) * kAmbientIntensity;
-        item.diffuse = firstOr(m->diffuseColor, kDefaultDiffuse);
-        item.specular = firstOr(m->specularColor, kDefaultSpecular);
-        item.shininess = firstOr(m->shininess, kDefaultShininess) * 128.0f;
-        item.alpha = 1.0f - firstOr(m->transparency, kDefaultTransparency);
-    } else {
-        item.emissive = kDefaultEmissive;
-        item.ambient = kDefaultAmbient * kAmbientIntensity;
-        item.diffuse = kDefaultDiffuse;
-        item.specular = kDefaultSpecular;
-        item.shininess = kDefaultShininess * 128.0f;
-        item.alpha = 1.0f - kDefaultTransparency;
-    }
+    item.model = glm::mat4(look.model);
+    item.normalMatrix = normalMatrixOf(look.model);
+    const SurfaceMaterial& m = look.material;
+    item.emissive = m.emissive;
+    item.ambient = m.ambient * kAmbientIntensity;
+    item.diffuse = m.diffuse;
+    item.specular = m.specular;
+    item.shininess = m.shininess * 128.0f;
+    item.alpha = 1.0f - m.transparency;
     item.lit = gpu.mode == GL_TRIANGLES;
-    // Inventor's LightModel BASE_COLOR: unlit, the diffuse (or vertex) colour alone.
-    if (const LightModel* lightModel = state.nearestNode<LightModel>();
-        lightModel && lightModel->model() == LightModel::BASE_COLOR) {
+    if (look.baseColorOnly) {
         item.lit = false;
         item.emissive = glm::vec3(0.0f);
     }
 
     if (item.lit) {
-        action.lightsInScope(lightScratch_);
-        if (lightScratch_.size() > std::size_t(kMaxLights))
-            throw Error(std::to_string(lightScratch_.size()) +
+        if (look.lights.size() > std::size_t(kMaxLights))
+            throw Error(std::to_string(look.lights.size()) +
                         " lights are in scope of a shape; at most " + std::to_string(kMaxLights) +
                         " light a shape");
-        item.lightCount = int(lightScratch_.size());
-        for (std::size_t i = 0; i < lightScratch_.size(); ++i) {
-            item.lightVectors[i] = lightScratch_[i].vector;
-            item.lightColors[i] = lightScratch_[i].color;
+        item.lightCount = int(look.lights.size());
+        for (std::size_t i = 0; i < look.lights.size(); ++i) {
+            item.lightVectors[i] = look.lights[i].vector;
+            item.lightColors[i] = look.lights[i].color;
         }
     } else {
         item.lightCount = 0;
     }
 
-    action.clipPlanesInScope(planeScratch_);
-    if (planeScratch_.size() > std::size_t(maxClipPlanes_))
-        throw Error(std::to_string(planeScratch_.size()) +
+    if (look.clipPlanes.size() > std::size_t(maxClipPlanes_))
+        throw Error(std::to_string(look.clipPlanes.size()) +
                     " ClipPlanes are in scope of a shape, but this OpenGL clips with at most " +
                     std::to_string(maxClipPlanes_) + " (GL_MAX_CLIP_DISTANCES)");
-    item.clipPlaneCount = int(planeScratch_.size());
-    for (std::size_t i = 0; i < planeScratch_.size(); ++i)
-        item.clipPlanes[i] = glm::vec4(planeScratch_[i]);
+    item.clipPlaneCount = int(look.clipPlanes.size());
+    for (std::size_t i = 0; i < look.clipPlanes.size(); ++i)
+        item.clipPlanes[i] = glm::vec4(look.clipPlanes[i]);
 }
 
 void ShapeRenderer::setClipDistances(int count) {

@@ -4,17 +4,35 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include <volsg/gl/Program.h>
-#include <volsg/render/RenderAction.h>
+#include <volsg/render/FrameContext.h>
 
 namespace volsg {
 
 struct GpuMesh;
 struct Mesh;
+
+/// Inventor's SoMaterial values for one shape (its defaults without a Material in scope).
+struct SurfaceMaterial {
+    glm::vec3 ambient{0.2f}, diffuse{0.8f}, specular{0.0f}, emissive{0.0f};
+    float shininess = 0.2f;    ///< 0..1 (times 128 for the exponent)
+    float transparency = 0.0f; ///< 0..1
+};
+
+/// What a shape looks like where it is drawn, gathered by the traversal from the state.
+struct ShapeLook {
+    glm::dmat4 model{1.0};
+    SurfaceMaterial material;
+    /// Inventor's LightModel BASE_COLOR: unlit, the diffuse (or vertex) colour alone.
+    bool baseColorOnly = false;
+    std::span<const SceneLight> lights;     ///< in scope (with the headlight), world
+    std::span<const glm::dvec4> clipPlanes; ///< world (a, b, c, d) keeping ax+by+cz >= d
+};
 
 /// One per Renderer (so per GL context): the shape program and the queue of transparent
 /// shapes. Shading (linear values, no gamma), per fragment:
@@ -40,11 +58,10 @@ public:
 
     /// Puts `mesh` on the GPU into `gpu` (counted in meshUploads()).
     void upload(GpuMesh& gpu, const Mesh& mesh);
-    /// Draws `gpu` with the material, lights, clip planes and model matrix in scope at the
-    /// action's current node: at once if it is opaque and this is the Opaque pass; queued
+    /// Draws `gpu` as `look` says: at once if it is opaque and this is the Opaque pass; queued
     /// if it is transparent and this is the Transparent pass; not at all otherwise. Throws
-    /// Error for more clip planes or lights in scope than it can draw.
-    void submit(RenderAction& action, const GpuMesh& gpu);
+    /// Error for more clip planes or lights than it can draw.
+    void submit(const FrameContext& frame, const GpuMesh& gpu, const ShapeLook& look);
 
     /// Queues a draw that is not a shape's mesh (a glTF BLEND primitive) with the transparent
     /// shapes, sorted with them by `eyeDepth` (eye-space z, more negative = farther). It runs in
@@ -94,7 +111,7 @@ private:
             lightVector, lightColor;
     };
 
-    void fill(RenderAction& action, const GpuMesh& gpu, DrawItem& item);
+    void fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& item);
     void draw(const DrawItem& item);
 
     Program program_;
@@ -103,8 +120,6 @@ private:
     int enabledClipPlanes_ = 0;
     RenderView view_;
     std::vector<DrawItem> transparentQueue_;
-    std::vector<SceneLight> lightScratch_;
-    std::vector<glm::dvec4> planeScratch_;
     std::uint64_t meshUploads_ = 0;
     std::uint64_t programBuilds_ = 0;
     std::size_t drawsLastFrame_ = 0;

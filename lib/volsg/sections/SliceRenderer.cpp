@@ -14,9 +14,7 @@
 #include <volsg/gl/Shader.h>
 #include <volsg/gl/Texture.h>
 #include <volsg/gl/VertexArray.h>
-#include <volsg/nodes/Group.h>
-#include <volsg/nodes/VolumeData.h>
-#include <volsg/render/RenderAction.h>
+#include <volsg/render/FrameContext.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/sections/SectionShaders.h>
 #include <volsg/slicing/DataFormat.h>
@@ -26,13 +24,6 @@
 namespace volsg {
 
 namespace {
-
-/// Names the per-context resources all slices share in the Renderer's NodeCache, which keys
-/// entries by node: this node is never part of a scene.
-const Node& sharedKey() {
-    static const ref_ptr<Group> key = Group::create();
-    return *key;
-}
 
 /// A slice polygon has at most 12 edge crossings (a plane through box corners repeats them),
 /// so at most 10 triangles.
@@ -94,7 +85,7 @@ std::vector<float> finiteFloats(const VolumeGrid& grid) {
     return out;
 }
 
-void prepareData(SectionDataTexture& t, const SliceVolume& volume) {
+void prepareData(SectionDataTexture& t, const VolumeInScope& volume) {
     if (t.uploaded) return;
     const VolumeGrid& grid = *volume.data;
     const glm::ivec3 n = grid.dimensions();
@@ -131,7 +122,7 @@ void prepareData(SectionDataTexture& t, const SliceVolume& volume) {
     t.uploaded = true;
 }
 
-void prepareTables(SectionTables& t, const SliceVolume& volume) {
+void prepareTables(SectionTables& t, const VolumeInScope& volume) {
     if (t.built) return;
     const auto [lo, hi] = volume.data->naturalRange();
     t.table.build(volume.transferFunctions, {lo, hi});
@@ -198,16 +189,15 @@ void issue(const SliceDraw& d) {
 
 } // namespace
 
-void SliceRenderer::draw(RenderAction& action, const SliceVolume& volume, const SlicePlane& plane,
+void SliceRenderer::draw(FrameContext& frame, const VolumeInScope& volume, const SlicePlane& plane,
                          const SliceStyle& style) {
     const bool transparent = style.alphaUse == SliceAlphaUse::AsIs;
-    if (action.pass() != (transparent ? RenderPass::Transparent : RenderPass::Opaque)) return;
+    if (frame.pass != (transparent ? RenderPass::Transparent : RenderPass::Opaque)) return;
     const glm::dvec3 half = volume.halfExtent();
     std::vector<glm::vec3> triangles = plane.polygon(half);
     if (triangles.empty() || triangles.size() > kMaxPolygonVertices) return;
 
-    std::vector<glm::dvec4> worldPlanes;
-    action.clipPlanesInScope(worldPlanes);
+    const std::vector<glm::dvec4>& worldPlanes = volume.clipPlanes;
     if (worldPlanes.size() > std::size_t(kMaxClipPlanes))
         throw Error(std::to_string(worldPlanes.size()) +
                     " ClipPlanes are in scope of a slice; it clips with at most " +
@@ -222,12 +212,14 @@ void SliceRenderer::draw(RenderAction& action, const SliceVolume& volume, const 
     const std::uint64_t gridKey =
         mixKey(std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())),
                std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.tags.get())));
-    SectionProgram& shared = action.cache<SectionProgram>(sharedKey());
+    SectionProgram& shared = frame.cache.shared<SectionProgram>();
     prepareProgram(shared);
-    SectionDataTexture& data = action.cache<SectionDataTexture>(*volume.node, gridKey);
+    // Without a data owner the data itself keys its copy.
+    const Object& owner = volume.dataOwner ? *volume.dataOwner : *volume.data;
+    SectionDataTexture& data = frame.cache.get<SectionDataTexture>(owner, gridKey);
     prepareData(data, volume);
     SectionTables& tables =
-        action.cache<SectionTables>(*volume.node, mixKey(gridKey, volume.transferKey));
+        frame.cache.get<SectionTables>(owner, mixKey(gridKey, volume.transferKey));
     prepareTables(tables, volume);
 
     SliceDraw d;
@@ -236,18 +228,17 @@ void SliceRenderer::draw(RenderAction& action, const SliceVolume& volume, const 
     d.tables = &tables;
     d.triangles = std::move(triangles);
     d.localPlanes = std::move(localPlanes);
-    d.modelViewProjection =
-        glm::mat4(action.projectionMatrix() * action.viewMatrix() * volume.model);
+    d.modelViewProjection = glm::mat4(frame.view.projection * frame.view.view * volume.model);
     d.halfExtent = glm::vec3(half);
     d.invSpacing = glm::vec3(1.0 / volume.data->spacing());
     d.voxelCount = glm::vec3(volume.data->dimensions());
     d.style = style;
     d.tagged = volume.tags && tables.table.rows() > 1;
     if (!transparent) {
-        action.shapeRenderer().setClipDistances(0); // this shader clips by discarding
+        frame.shapes.setClipDistances(0); // this shader clips by discarding
         issue(d);
         // Volumes copy the opaque depth only when something opaque was drawn.
-        action.shapeRenderer().countDraw();
+        frame.shapes.countDraw();
         return;
     }
     // Sorted with the transparent shapes by the view depth of the polygon's centre.
@@ -255,8 +246,8 @@ void SliceRenderer::draw(RenderAction& action, const SliceVolume& volume, const 
     for (const glm::vec3& p : d.triangles)
         centre += glm::dvec3(p);
     centre /= double(d.triangles.size());
-    const double eyeDepth = (action.viewMatrix() * volume.model * glm::dvec4(centre, 1.0)).z;
-    ShapeRenderer& shapes = action.shapeRenderer();
+    const double eyeDepth = (frame.view.view * volume.model * glm::dvec4(centre, 1.0)).z;
+    ShapeRenderer& shapes = frame.shapes;
     shapes.queueTransparent(eyeDepth, [d, &shapes] {
         shapes.setClipDistances(0);
         issue(d);

@@ -8,7 +8,7 @@
 
 namespace volsg {
 
-SliceSampler::SliceSampler(const SliceVolume& volume, SliceStyle style)
+SliceSampler::SliceSampler(const VolumeInScope& volume, SliceStyle style)
     : volume_(volume), style_(style), halfExtent_(volume.halfExtent()) {
     if (volume.data->type() == VoxelType::Float)
         std::tie(lowest_, highest_) = volume.data->minMax();

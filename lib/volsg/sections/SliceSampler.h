@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include <volsg/sections/SliceVolume.h>
+#include <volsg/volume/VolumeModel.h>
 
 namespace volsg {
 
@@ -39,7 +39,7 @@ struct SliceSample {
 /// its dataRange or the data type's natural range.
 class SliceSampler {
 public:
-    SliceSampler(const SliceVolume& volume, SliceStyle style);
+    SliceSampler(const VolumeInScope& volume, SliceStyle style);
 
     /// The slice at local point p (anywhere; it is clamped into the data).
     SliceSample sample(const glm::dvec3& local) const;
@@ -47,7 +47,7 @@ public:
 private:
     double finiteValue(int i, int j, int k) const;
 
-    const SliceVolume& volume_;
+    const VolumeInScope& volume_;
     SliceStyle style_;
     glm::dvec3 halfExtent_;
     double lowest_ = 0.0, highest_ = 0.0;

@@ -19,8 +19,7 @@
 #include <volsg/gl/Shader.h>
 #include <volsg/gl/Texture.h>
 #include <volsg/gl/VertexArray.h>
-#include <volsg/nodes/Group.h>
-#include <volsg/render/RenderAction.h>
+#include <volsg/render/FrameContext.h>
 #include <volsg/render/RenderTarget.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
@@ -86,13 +85,6 @@ Mode modeOf(VolumeRenderMode m) {
     return kDvr;
 }
 
-/// Names the per-context resources all volumes share (programs, the projection target) in the
-/// Renderer's NodeCache, which keys entries by node: this node is never part of a scene.
-const Node& sharedCacheKey() {
-    static const ref_ptr<Group> key = Group::create();
-    return *key;
-}
-
 std::string prelude(int mode, bool tagged, bool lighting, bool preIntegrated, bool lean = false) {
     std::string s = "#version 330 core\n#define MODE " + std::to_string(mode) + "\n";
     if (lean) s += "#define LEAN\n";
@@ -132,7 +124,8 @@ struct SliceShared {
     Framebuffer opaqueDepthFramebuffer;
     Texture opaqueDepth;
     glm::ivec2 opaqueDepthSize{0};
-    int max3DTextureSize = 0;
+    int driverMax3DTextureSize = 0; ///< GL_MAX_3D_TEXTURE_SIZE
+    int max3DTextureSize = 0;       ///< what bricks use (RenderDebug may lower it)
 
     /// `lean`: the variant with only the slab loop of samples that all count alike (see
     /// LEAN in SliceShaders.h); the caller decides when that holds.
@@ -598,31 +591,32 @@ void checkVolume(const RayCastVolume& volume) {
 
 } // namespace
 
-void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVolume& volume,
-                        std::uint64_t transferKey, const SlicingSettings& settings,
+void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastVolume& volume,
+                        std::span<const SceneLight> lights, const SlicingSettings& settings,
                         SlicingStats& stats) {
-    if (action.pass() != RenderPass::Volume) return;
+    if (frame.pass != RenderPass::Volume) return;
+    const std::uint64_t transferKey = volume.transferKey;
     const auto started = std::chrono::steady_clock::now();
     checkVolume(volume);
     const VolumeGrid& grid = *volume.data;
     const Mode mode = modeOf(volume.mode);
 
     activateUploadUnit();
-    SliceShared& shared = action.cache<SliceShared>(sharedCacheKey());
-    if (shared.max3DTextureSize == 0) {
-        glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &shared.max3DTextureSize);
-        // Test hook: bricking as a GL with a smaller limit would need it (tests/robustness).
-        if (const char* forced = std::getenv("VOLSG_MAX_3D_TEXTURE_SIZE"))
-            shared.max3DTextureSize = std::min(shared.max3DTextureSize, std::atoi(forced));
-        shared.max3DTextureSize = std::max(shared.max3DTextureSize, 2);
-    }
+    SliceShared& shared = frame.cache.shared<SliceShared>();
+    if (shared.driverMax3DTextureSize == 0)
+        glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &shared.driverMax3DTextureSize);
+    // RenderDebug can lower the limit, to test bricking as a smaller GL would need it.
+    shared.max3DTextureSize = shared.driverMax3DTextureSize;
+    if (frame.debug.max3DTextureSize > 0)
+        shared.max3DTextureSize = std::min(shared.max3DTextureSize, frame.debug.max3DTextureSize);
+    shared.max3DTextureSize = std::max(shared.max3DTextureSize, 2);
     // Keyed by the grids too: new data (a VolumeData reload) starts a fresh cache and the old
     // one is dropped after this frame.
     const std::uint64_t key =
         std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())) ^
         (std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.tags.get())) << 1);
-    VolumeTextures& v = action.cache<VolumeTextures>(owner, key);
-    TextureStaging& staging = action.cache<TextureStaging>(owner);
+    VolumeTextures& v = frame.cache.get<VolumeTextures>(owner, key);
+    TextureStaging& staging = frame.cache.get<TextureStaging>(owner);
     if (!v.data && staging.next && staging.next->data() == volume.data.get() &&
         (!staging.next->tags() || staging.next->tags() == volume.tags.get()))
         v.staged = std::move(staging.next); // staged while the previous step was shown
@@ -636,7 +630,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     if (!v.data && staging.lastKey != 0 && staging.lastKey != key) {
         // A new grid for this node (a series step): the last grid's textures are refilled
         // instead of allocated anew. Its entry is dropped after this frame anyway.
-        VolumeTextures& last = action.cache<VolumeTextures>(owner, staging.lastKey);
+        VolumeTextures& last = frame.cache.get<VolumeTextures>(owner, staging.lastKey);
         for (BrickState& s : last.bricks)
             if (s.data) v.spareTextures.push_back(std::move(s.data));
         last.bricks.clear();
@@ -662,10 +656,8 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     // where that is exact: DVR samples each part at one point (not pre-integrated, not split at
     // tag cells); MIP of one row (tags would let a skipped sample's row matter). MINIP and
     // AVERAGE see every sample.
-    // VOLSG_NO_EMPTY_CELLS=1 turns skipping off, for before/after figures of volsg-bench.
-    static const bool noEmptyCells = std::getenv("VOLSG_NO_EMPTY_CELLS") != nullptr;
     const bool skipCells =
-        settings.skipEmptyCells && !noEmptyCells &&
+        settings.skipEmptyCells &&
         ((mode == kDvr && !tagged && !preIntegrated) || (mode == kMip && !tagged));
     if (skipCells) prepareCells(v, mode == kMip ? 1 : 0);
     const bool hasPlaneOpacity = mode == kDvr && planeOpacityMatters(volume.planeOpacity);
@@ -678,7 +670,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     }
 
     // The view in the volume's local coordinates.
-    const RenderView& view = action.view();
+    const RenderView& view = frame.view;
     const glm::dmat4 model = volume.model;
     const glm::dmat4 modelView = view.view * model;
     const glm::dmat4 eyeToLocal = glm::inverse(modelView);
@@ -699,25 +691,25 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
                      : long(std::ceil(depthExtent / (autoSpacing * double(slabSamples))));
     still = std::clamp(still, 1L, long(kMaxPlanes));
     long planes = still;
-    if (action.isInteractive()) {
+    if (frame.interactive) {
         planes = settings.interactivePlanes > 0 ? long(settings.interactivePlanes)
                                                 : std::max(1L, (still + 3) / 4);
         // The viewer lowers this further when interactive frames are too slow, but not below
         // kMinScaledPlanes: with two or three planes the slab boundaries show as seams.
-        planes = std::max(long(std::ceil(double(planes) * action.interactivePlaneScale())),
+        planes = std::max(long(std::ceil(double(planes) * frame.interactivePlaneScale)),
                           std::min(planes, kMinScaledPlanes));
     }
     planes = std::clamp(planes, 1L, long(kMaxPlanes));
     const PlaneLayout layout =
         PlaneLayout::over(boxDepth, std::max(depthExtent, 1e-12) / double(planes) * (1.0 + 1e-9));
 
-    SlicingStats frame;
-    frame.bricksTotal = int(v.bricks.size());
-    frame.brickGrid = v.layout.grid();
-    frame.brickTexels = v.layout.largestTexture();
-    frame.planes = layout.count;
-    frame.planeSpacing = layout.spacing;
-    frame.emptyCells = skipCells ? v.cells.emptyFraction() : 0.0;
+    SlicingStats drawn;
+    drawn.bricksTotal = int(v.bricks.size());
+    drawn.brickGrid = v.layout.grid();
+    drawn.brickTexels = v.layout.largestTexture();
+    drawn.planes = layout.count;
+    drawn.planeSpacing = layout.spacing;
+    drawn.emptyCells = skipCells ? v.cells.emptyFraction() : 0.0;
 
     // The clip planes in local coordinates.
     if (volume.clipPlanes.size() > std::size_t(kMaxClipPlanes))
@@ -786,7 +778,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         while (double(layout.count) * rowsAcross(rowGroup) > kRowCutBudget && rowGroup < 64)
             rowGroup *= 2;
     }
-    frame.cellRowGroup = rowGroup;
+    drawn.cellRowGroup = rowGroup;
     v.vertices.clear();
     for (const int i : v.order) {
         BrickState& s = v.bricks[std::size_t(i)];
@@ -796,7 +788,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         s.rowFirst.clear();
         s.rowCount.clear();
         if (mode == kDvr && !s.mayEmit) {
-            ++frame.bricksSkipped;
+            ++drawn.bricksSkipped;
             continue;
         }
         const Brick& b = v.layout.bricks()[std::size_t(i)];
@@ -812,14 +804,14 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
                 v.vertices.insert(v.vertices.end(), v.slices.vertices.begin(),
                                   v.slices.vertices.end());
             }
-            frame.cellRows += int(s.rows.size());
+            drawn.cellRows += int(s.rows.size());
         } else {
             ProxyPlaneCutter::cutInto(b.boxMin - margin, b.boxMax + margin, modelView, layout,
                                       clipDepth.x, v.slices);
             v.vertices.insert(v.vertices.end(), v.slices.vertices.begin(), v.slices.vertices.end());
         }
         s.count = GLsizei(v.vertices.size()) - s.first;
-        frame.sliceTriangles += std::size_t(s.count) / 3;
+        drawn.sliceTriangles += std::size_t(s.count) / 3;
         s.faceFirst = GLint(v.vertices.size());
         appendFrontFaces(b, v.layout.grid(), viewer, view.orthographic, v.vertices);
         // Clip planes that rays cross into the kept side bound the visible part too.
@@ -834,7 +826,7 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     }
 
     const auto prepared = std::chrono::steady_clock::now();
-    frame.cpuMilliseconds = std::chrono::duration<double, std::milli>(prepared - started).count();
+    drawn.cpuMilliseconds = std::chrono::duration<double, std::milli>(prepared - started).count();
     if (!v.vertices.empty()) {
         if (!v.vertexBuffer) {
             v.vertexBuffer = Buffer(GL_ARRAY_BUFFER);
@@ -920,8 +912,6 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
         glUniform1ui(program.uniformLocation("uInfoMask"), infoMask);
 
         if (lighting) {
-            std::vector<SceneLight> lights;
-            action.lightsInScope(lights);
             if (lights.size() > std::size_t(kMaxLights))
                 throw Error(std::to_string(lights.size()) +
                             " lights are in scope of a Volume; at most " +
@@ -948,10 +938,10 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
 
         // Opaque geometry (drawn by the shape renderer in the opaque pass) ends rays: the
         // slices read a copy of its depth. Without any, the copy and the reads are skipped.
-        const bool hasOpaque = action.shapeRenderer().drawsLastFrame() > 0;
+        const bool hasOpaque = frame.shapes.drawsLastFrame() > 0;
         program.set("uHasOpaqueDepth", hasOpaque ? 1 : 0);
         if (hasOpaque) {
-            shared.copyOpaqueDepth(action.target());
+            shared.copyOpaqueDepth(frame.target);
             shared.opaqueDepth.bind(kOpaqueDepthUnit);
         }
         v.tableTexture.bind(kTableUnit);
@@ -961,10 +951,10 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
 
         // Projection modes gather into their own target, then composite once.
         if (mode == kMip || mode == kMinip) {
-            shared.beginProjection(action.target(), 0, mode == kMip ? 0.0f : 4.0f);
+            shared.beginProjection(frame.target, 0, mode == kMip ? 0.0f : 4.0f);
             glBlendEquation(mode == kMip ? GL_MAX : GL_MIN);
         } else if (mode == kAverage) {
-            shared.beginProjection(action.target(), 1, 0.0f);
+            shared.beginProjection(frame.target, 1, 0.0f);
             glBlendFunc(GL_ONE, GL_ONE);
         }
 
@@ -998,11 +988,11 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
                 glDrawArrays(GL_TRIANGLES, s.faceFirst, s.faceCount);
                 program.set("uFacePass", 0);
             }
-            ++frame.bricksDrawn;
+            ++drawn.bricksDrawn;
         }
 
         if (mode != kDvr) {
-            action.target().bind();
+            frame.target.bind();
             glBlendEquation(GL_FUNC_ADD);
             glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
             const Program& composite = shared.compositeProgram(mode);
@@ -1024,37 +1014,35 @@ void VolumeSlicer::draw(RenderAction& action, const Node& owner, const RayCastVo
     v.staged.reset(); // its bricks are uploaded; skipped (empty) ones upload directly later
     v.spareTextures.clear();
     for (const BrickState& s : v.bricks)
-        if (s.resident) ++frame.bricksResident;
-    frame.textureBytes = v.residentBytes;
+        if (s.resident) ++drawn.bricksResident;
+    drawn.textureBytes = v.residentBytes;
     ++v.totals.frames;
-    frame.frames = v.totals.frames;
-    frame.brickUploads = v.totals.brickUploads;
-    frame.uploadedBytes = v.totals.uploadedBytes;
-    frame.transferTableBuilds = v.totals.transferTableBuilds;
-    frame.preIntegrationBuilds = v.totals.preIntegrationBuilds;
-    frame.stagedUploads = v.totals.stagedUploads;
-    frame.refilledTextures = v.totals.refilledTextures;
-    frame.submitMilliseconds =
+    drawn.frames = v.totals.frames;
+    drawn.brickUploads = v.totals.brickUploads;
+    drawn.uploadedBytes = v.totals.uploadedBytes;
+    drawn.transferTableBuilds = v.totals.transferTableBuilds;
+    drawn.preIntegrationBuilds = v.totals.preIntegrationBuilds;
+    drawn.stagedUploads = v.totals.stagedUploads;
+    drawn.refilledTextures = v.totals.refilledTextures;
+    drawn.submitMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - prepared)
             .count();
-    stats = frame;
+    stats = drawn;
 }
 
-void VolumeSlicer::stage(RenderAction& action, const Node& owner,
+void VolumeSlicer::stage(FrameContext& frame, const Object& owner,
                          const ref_ptr<const VolumeGrid>& data,
                          const ref_ptr<const VolumeGrid>& tags) {
-    if (action.pass() != RenderPass::Volume || !data) return;
-    // Benchmark hook: the direct upload of every step, for before/after figures.
-    if (const char* off = std::getenv("VOLSG_NO_TEXTURE_STAGING"); off && *off && *off != '0')
-        return;
-    TextureStaging& staging = action.cache<TextureStaging>(owner);
+    if (frame.pass != RenderPass::Volume || !data) return;
+    if (!frame.debug.textureStaging) return; // the direct upload of every step (volsg-bench)
+    TextureStaging& staging = frame.cache.get<TextureStaging>(owner);
     if (!staging.hasFrame) return; // no frame drawn yet: how to lay the grid out is unknown
     const ref_ptr<const VolumeGrid> labels = staging.tagged ? tags : nullptr;
     if (staging.next && staging.next->data() == data.get() && staging.next->tags() == labels.get())
         return;                                                   // staged already
     if (tags && tags->dimensions() != data->dimensions()) return; // drawing it will say why
     if (labels && !labels->isLabelType()) return;
-    const SliceShared& shared = action.cache<SliceShared>(sharedCacheKey());
+    const SliceShared& shared = frame.cache.shared<SliceShared>();
     const BrickLayout layout(
         data->dimensions(), data->spacing(),
         layoutLimits(*data, tags.get(), shared, staging.textureBudget, staging.guard));

@@ -1,47 +1,38 @@
 #pragma once
 // The GL renderer of the Volume node: 3D-texture slicing (Cabral et al. 1994; the seed's
-// Inventor Volume node) measured against SCENE-FORMAT.md section 4.
+// Inventor Volume node) measured against docs/SCENE-FORMAT.md section 4.
 
 #include <cstdint>
+#include <span>
 
 #include <glm/glm.hpp>
 
-#include <volsg/reference/ReferenceRayCaster.h>
+#include <volsg/render/FrameContext.h>
 #include <volsg/slicing/SlicingStats.h>
+#include <volsg/volume/VolumeModel.h>
 
 namespace volsg {
 
-class Node;
-class RenderAction;
-
-/// The Volume node's fields that are not part of the rendering model (they choose speed and
-/// method, not meaning).
+/// How the slicer renders, not what (they choose speed and method, not the image the
+/// rendering model defines). The Volume node sets them from its fields of the same names,
+/// which document them (nodes/volsg/nodes/Volume.h); 0 counts mean automatic.
 struct SlicingSettings {
-    int numPlanes = 0;         ///< planes over the box's depth for a still frame; 0 = automatic
-    int interactivePlanes = 0; ///< planes while interacting; 0 = a quarter of the still count
-    /// DVR, MIP, MINIP: samples each plane's slab takes along its ray (DVR composites them in
-    /// the fragment; MIP/MINIP also take every voxel-centre crossing in the slab); the
-    /// automatic plane count divides by it, keeping 2 samples per voxel.
+    int numPlanes = 0;
+    int interactivePlanes = 0;
     int samplesPerPlane = 1;
-    /// MIP, MINIP: also sample every voxel-centre crossing (finds thin peaks); false: only the
-    /// samplesPerPlane evenly spaced samples (cheaper, a ray caster's error at that step).
     bool mipPeaks = true;
-    /// MIP, MINIP without mipPeaks, several samples per plane: take the extreme from the
-    /// parabola through the most extreme sample and its two neighbours (evenly spaced samples
-    /// always come out below a peak that lies between them). False: the largest sample.
     bool refinePeaks = true;
-    /// DVR and MIP: skip the cells of 8^3 voxels that cannot emit under the transfer function
-    /// (EmptyCells, CellRows). False only to measure what it saves.
-    bool skipEmptyCells = true;
-    bool nearest = false; ///< nearest-neighbour data instead of trilinear
+    bool nearest = false; ///< interpolation NEAREST
     bool preIntegrated = false;
     bool lighting = false;
-    std::uint64_t textureBudget = 0; ///< bytes of 3D textures; 0 = only the driver's size limit
-    glm::vec3 specular{0.0f};        ///< lighting: the Material's specular colour
-    float shininess = 0.2f;          ///< lighting: the Material's shininess (Inventor, 0..1)
+    std::uint64_t textureBudget = 0;
+    /// Skip the cells of 8^3 voxels that cannot emit (RenderDebug::skipEmptyCells).
+    bool skipEmptyCells = true;
+    glm::vec3 specular{0.0f}; ///< lighting: the Material's specular colour
+    float shininess = 0.2f;   ///< lighting: the Material's shininess (Inventor, 0..1)
 };
 
-/// Draws one volume in the Volume pass of a RenderAction: view-aligned proxy planes cut from
+/// Draws one volume in the Volume pass of a frame: view-aligned proxy planes cut from
 /// each brick with one shared PlaneLayout, back to front, into the float target over what the
 /// opaque pass drew, with its depth test. lib/volsg/slicing/README.md has the measurements.
 ///
@@ -85,19 +76,20 @@ class VolumeSlicer {
 public:
     /// Draws `volume` (its data, tags, model, transfer functions, mode, planeOpacity, BoxClip,
     /// and world clip planes, as the reference ray caster takes them) if this is the Volume
-    /// pass. `owner` keys the GPU cache (textures, tables) in the action's NodeCache;
-    /// `transferKey` must change whenever the transfer functions change: the tables are rebuilt
-    /// only then, and the volume textures never are. Lights come from the action. Throws Error
-    /// for invalid input (mismatched tag grid, too many rows, lights or clip planes).
-    static void draw(RenderAction& action, const Node& owner, const RayCastVolume& volume,
-                     std::uint64_t transferKey, const SlicingSettings& settings,
+    /// pass, lit by `lights` when settings.lighting. `owner` keys the GPU cache (textures,
+    /// tables) in the frame's RenderCache; `volume.transferKey` must change whenever the
+    /// transfer functions change: the tables are rebuilt only then, and the volume textures
+    /// never are. Throws Error for invalid input (mismatched tag grid, too many rows, lights or
+    /// clip planes).
+    static void draw(FrameContext& frame, const Object& owner, const RayCastVolume& volume,
+                     std::span<const SceneLight> lights, const SlicingSettings& settings,
                      SlicingStats& stats);
 
     /// Stages the textures of the grid `owner` will show next (a VolumeSeries' next step that
     /// is in memory already) in a pixel unpack buffer, laid out as the last frame's bricks, so
     /// that the frame showing it uploads from the ready buffer (SlicingStats::stagedUploads).
     /// Call in the Volume pass after draw(); nothing to do when that grid is staged already.
-    static void stage(RenderAction& action, const Node& owner,
+    static void stage(FrameContext& frame, const Object& owner,
                       const ref_ptr<const VolumeGrid>& data, const ref_ptr<const VolumeGrid>& tags);
 };
 

@@ -5,7 +5,6 @@
 #include <mutex>
 #include <sstream>
 
-#include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/ReadContext.h>
 
@@ -149,13 +148,13 @@ void PackedVolume::checkObjectCount(std::size_t count) const {
                     fileName_);
 }
 
-void PackedVolume::extendBoundingBox(BoundingBoxAction& action) const {
+Box3 PackedVolume::localBounds() const {
     const VoxelObject& first = *objects_.front()->voxels;
     const glm::dvec3 half = 0.5 * glm::dvec3(first.dimensions()) * first.spacing();
     Box3 box;
     box.extendBy(-half);
     box.extendBy(half);
-    action.extendByLocal(box);
+    return box;
 }
 
 } // namespace volsg

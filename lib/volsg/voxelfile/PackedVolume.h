@@ -7,11 +7,10 @@
 #include <string>
 #include <vector>
 
+#include <volsg/math/Box3.h>
 #include <volsg/voxelfile/VoxelFile.h>
 
 namespace volsg {
-
-class BoundingBoxAction;
 
 class PackedVolume {
 public:
@@ -37,7 +36,7 @@ public:
 
     /// The volume's box in local coordinates (SCENE-FORMAT.md section 4), from the stored
     /// dimensions and spacing.
-    void extendBoundingBox(BoundingBoxAction& action) const;
+    Box3 localBounds() const;
 
     const std::string& fileName() const { return fileName_; }
     std::uint32_t volumeIndex() const { return volume_; }

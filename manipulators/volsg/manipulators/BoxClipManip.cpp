@@ -2,11 +2,9 @@
 
 #include <algorithm>
 
-#include <volsg/actions/PickAction.h>
 #include <volsg/manipulators/DragMath.h>
 #include <volsg/nodes/Cube.h>
 #include <volsg/nodes/Sphere.h>
-#include <volsg/render/RenderAction.h>
 
 namespace volsg {
 
@@ -126,16 +124,6 @@ void BoxClipManip::setBox(glm::dvec3 lo, glm::dvec3 hi) {
     const glm::vec3 o(lo), e(hi - lo);
     if (origin() != o) origin = o;
     if (extent() != e) extent = e;
-}
-
-void BoxClipManip::render(RenderAction& action) {
-    drawHandles(action);
-    BoxClip::doAction(action);
-}
-
-void BoxClipManip::pick(PickAction& action) {
-    drawHandles(action);
-    BoxClip::doAction(action);
 }
 
 } // namespace volsg

@@ -19,9 +19,6 @@ public:
 
     Node& node() override { return *this; }
 
-    void render(RenderAction& action) override;
-    void pick(PickAction& action) override;
-
 protected:
     ~BoxClipManip() override = default;
     void buildHandles(DraggerGeometry& handles) override;

@@ -1,11 +1,9 @@
 #include <volsg/manipulators/ClipPlaneManip.h>
 
-#include <volsg/actions/PickAction.h>
 #include <volsg/manipulators/DragMath.h>
 #include <volsg/nodes/Cube.h>
 #include <volsg/nodes/Cylinder.h>
 #include <volsg/nodes/Sphere.h>
-#include <volsg/render/RenderAction.h>
 
 namespace volsg {
 
@@ -86,16 +84,6 @@ void ClipPlaneManip::continueDrag(int part, const Ray& localRay) {
     const auto s = closestLineParameter(localRay, startCenter_, startNormal_);
     if (!s) return;
     plane = Plane{glm::vec3(startNormal_), float(startDistance_ + (*s - startLine_))};
-}
-
-void ClipPlaneManip::render(RenderAction& action) {
-    drawHandles(action);
-    ClipPlane::doAction(action);
-}
-
-void ClipPlaneManip::pick(PickAction& action) {
-    drawHandles(action);
-    ClipPlane::doAction(action);
 }
 
 } // namespace volsg

@@ -19,9 +19,6 @@ public:
     /// Where the handles sit: the point of the plane nearest the anchor, local coordinates.
     glm::dvec3 handleCenter() const;
 
-    void render(RenderAction& action) override;
-    void pick(PickAction& action) override;
-
 protected:
     ~ClipPlaneManip() override = default;
     void buildHandles(DraggerGeometry& handles) override;

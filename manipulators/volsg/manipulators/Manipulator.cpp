@@ -1,10 +1,16 @@
 #include <volsg/manipulators/Manipulator.h>
 
 #include <cmath>
+#include <mutex>
 #include <unordered_set>
 
 #include <volsg/actions/Action.h>
+#include <volsg/actions/PickAction.h>
 #include <volsg/fields/Field.h>
+#include <volsg/manipulators/BoxClipManip.h>
+#include <volsg/manipulators/ClipPlaneManip.h>
+#include <volsg/manipulators/TransformManip.h>
+#include <volsg/render/RenderAction.h>
 #include <volsg/state/State.h>
 
 namespace volsg {
@@ -97,6 +103,33 @@ DraggerGeometry& Manipulator::handles() {
         buildHandles(*handles_);
     }
     return *handles_;
+}
+
+namespace {
+
+template <class A, class M> void handlesThenState(A& action, M& manipulator) {
+    manipulator.handlesThenState(action);
+}
+
+template <class M> void addMethods() {
+    RenderAction::methods().add(&handlesThenState<RenderAction, M>);
+    PickAction::methods().add(&handlesThenState<PickAction, M>);
+}
+
+} // namespace
+
+Manipulator::Manipulator() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        addMethods<BoxClipManip>();
+        addMethods<ClipPlaneManip>();
+        addMethods<TransformManip>();
+    });
+}
+
+void Manipulator::handlesThenState(Action& action) {
+    drawHandles(action);
+    node().doAction(action);
 }
 
 void Manipulator::drawHandles(Action& action) {

@@ -29,8 +29,12 @@ int replaceNodeInGraph(Node& root, const Node& from, const ref_ptr<Node>& to);
 /// ClipPlaneManip is a ClipPlane), so while it stands in the graph it does everything the plain
 /// node does, and draws its handles before it, outside the clipping in scope (so no clip plane,
 /// its own included, hides or disables them).
+///
+/// The render and pick actions reach a manipulator through methods of their own
+/// (handlesThenState), added to RenderAction and PickAction when the first one is made.
 class Manipulator {
 public:
+    Manipulator();
     virtual ~Manipulator() = default;
 
     /// The manipulator as a node of the graph.
@@ -62,6 +66,10 @@ public:
     bool isDragging() const { return activePart_ >= 0; }
     /// The handle being dragged (an id of the manipulator's own part list), -1 when none.
     int activePart() const { return activePart_; }
+
+    /// What the render and pick actions do with a manipulator: its handles, then what the
+    /// plain node does (its doAction).
+    void handlesThenState(Action& action);
 
     /// The model matrix at the manipulator in the last traversal that drew or picked it.
     const glm::dmat4& model() const { return model_; }

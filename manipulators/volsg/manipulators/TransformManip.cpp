@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include <volsg/actions/PickAction.h>
 #include <volsg/manipulators/DragMath.h>
 #include <volsg/nodes/Cone.h>
 #include <volsg/nodes/Cylinder.h>
 #include <volsg/nodes/Sphere.h>
-#include <volsg/render/RenderAction.h>
 
 namespace volsg {
 
@@ -87,16 +85,6 @@ void TransformManip::continueDrag(int part, const Ray& localRay) {
     const auto s = closestLineParameter(localRay, startPivot_, axis);
     if (!s) return;
     translation = glm::vec3(startTranslation_ + axis * (*s - startLine_));
-}
-
-void TransformManip::render(RenderAction& action) {
-    drawHandles(action);
-    Transform::doAction(action);
-}
-
-void TransformManip::pick(PickAction& action) {
-    drawHandles(action);
-    Transform::doAction(action);
 }
 
 } // namespace volsg

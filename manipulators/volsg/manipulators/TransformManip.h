@@ -21,9 +21,6 @@ public:
     /// The point the handles turn about, in the parent's coordinates: translation + center.
     glm::dvec3 pivot() const;
 
-    void render(RenderAction& action) override;
-    void pick(PickAction& action) override;
-
 protected:
     ~TransformManip() override = default;
     void buildHandles(DraggerGeometry& handles) override;

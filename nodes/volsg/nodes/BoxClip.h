@@ -3,7 +3,7 @@
 // scope (the seed's box clipping); with opacity 0 it also removes polygon geometry.
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
-#include <volsg/reference/ReferenceRayCaster.h>
+#include <volsg/volume/VolumeModel.h>
 
 namespace volsg {
 

@@ -1,5 +1,8 @@
 // The registry of node types the reader knows by name. A new node type adds one line here.
-#include <volsg/core/NodeType.h>
+#include <volsg/nodes/BuiltinNodes.h>
+
+#include <mutex>
+
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
@@ -32,7 +35,9 @@
 
 namespace volsg {
 
-void registerBuiltinNodeTypes(NodeRegistry& r) {
+namespace {
+
+void addBuiltinTypes(NodeRegistry& r) {
     r.add(Group::classType());
     r.add(Separator::classType());
     r.add(Switch::classType());
@@ -64,6 +69,14 @@ void registerBuiltinNodeTypes(NodeRegistry& r) {
     r.add(ResetTransform::classType());
     r.add(OrthoSlice::classType());
     r.add(ObliqueSlice::classType());
+}
+
+} // namespace
+
+NodeRegistry& nodeTypes() {
+    static std::once_flag once;
+    std::call_once(once, [] { addBuiltinTypes(NodeRegistry::instance()); });
+    return NodeRegistry::instance();
 }
 
 } // namespace volsg

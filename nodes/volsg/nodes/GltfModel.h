@@ -42,10 +42,11 @@ public:
     /// Decodes a PickedPoint::primitiveIndex reported by this model; empty if out of range.
     std::optional<PickDetail> pickDetail(std::size_t primitiveIndex) const;
 
+    /// Which load asset() is (a process-wide count): keys the GPU copy, since a new asset may
+    /// reuse the old one's address.
+    std::uint64_t loadSerial() const { return loadSerial_; }
+
     void readDone(const ReadContext& context) override;
-    void render(RenderAction& action) override;
-    void getBoundingBox(BoundingBoxAction& action) override;
-    void pick(PickAction& action) override;
 
 protected:
     ~GltfModel() override;

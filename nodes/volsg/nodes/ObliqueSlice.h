@@ -27,10 +27,6 @@ public:
     std::optional<SlicePlane> localPlane() const;
     SliceStyle style() const; ///< interpolation and alphaUse as lib/volsg/sections takes them
 
-    void render(RenderAction& action) override;
-    void getBoundingBox(BoundingBoxAction& action) override;
-    void pick(PickAction& action) override;
-
 protected:
     ~ObliqueSlice() override = default;
 };

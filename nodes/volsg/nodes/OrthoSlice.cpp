@@ -1,12 +1,9 @@
-// OrthoSlice: finds its volume and plane in the state and hands them to lib/volsg/sections
-// (drawing, picking, bounds).
+// OrthoSlice: its plane and style as lib/volsg/sections takes them, and its clip plane (the
+// render, bounding box and pick actions hand them over with the volume in scope).
 #include <volsg/nodes/OrthoSlice.h>
 
-#include <volsg/actions/BoundingBoxAction.h>
-#include <volsg/actions/PickAction.h>
-#include <volsg/render/RenderAction.h>
-#include <volsg/sections/SlicePick.h>
-#include <volsg/sections/SliceRenderer.h>
+#include <volsg/actions/Action.h>
+#include <volsg/nodes/VolumeData.h>
 
 namespace volsg {
 
@@ -16,28 +13,21 @@ const EnumValues OrthoSlice::alphaUseNames{
     {"ALPHA_AS_IS", ALPHA_AS_IS}, {"ALPHA_OPAQUE", ALPHA_OPAQUE}, {"ALPHA_BINARY", ALPHA_BINARY}};
 const EnumValues OrthoSlice::clippingSideNames{{"FRONT", FRONT}, {"BACK", BACK}};
 
-namespace {
-
-SlicePlane orthoPlane(const OrthoSlice& slice, const SliceVolume& volume) {
-    return SlicePlane::orthogonal(*volume.data, slice.axis(), slice.sliceNumber());
-}
-
-} // namespace
-
 SliceStyle OrthoSlice::style() const {
     // The node's enums are in SliceAlphaUse's order.
     return SliceStyle{interpolation() == LINEAR, SliceAlphaUse(alphaUse())};
 }
 
-void OrthoSlice::doAction(Action& action) {
-    addClipPlane(action);
+SlicePlane OrthoSlice::localPlane(const VolumeGrid& data) const {
+    return SlicePlane::orthogonal(data, axis(), sliceNumber());
 }
 
-void OrthoSlice::addClipPlane(Action& action) {
+void OrthoSlice::doAction(Action& action) {
     if (!clipping()) return;
-    const auto volume = SliceVolume::fromState(action.state());
-    if (!volume) return;
-    const SlicePlane plane = orthoPlane(*this, *volume);
+    const VolumeData* node = action.state().nearestNode<VolumeData>();
+    const ref_ptr<const VolumeGrid> data = node ? node->grid() : nullptr;
+    if (!data) return;
+    const SlicePlane plane = localPlane(*data);
     // BACK removes the side below the slice along its axis (keeps n . p >= d), FRONT the side
     // above it.
     const float sign = clippingSide() == BACK ? 1.0f : -1.0f;
@@ -45,25 +35,6 @@ void OrthoSlice::addClipPlane(Action& action) {
     if (!clipPlane_) clipPlane_ = ClipPlane::create();
     if (!(clipPlane_->plane() == kept)) clipPlane_->plane = kept;
     action.state().add(*clipPlane_);
-}
-
-void OrthoSlice::render(RenderAction& action) {
-    // The slice itself is not clipped by its own plane: it draws before the plane is in scope.
-    if (const auto volume = SliceVolume::fromState(action.state()))
-        SliceRenderer::draw(action, *volume, orthoPlane(*this, *volume), style());
-    addClipPlane(action);
-}
-
-void OrthoSlice::getBoundingBox(BoundingBoxAction& action) {
-    if (const auto volume = SliceVolume::fromState(action.state()))
-        action.extendByLocal(orthoPlane(*this, *volume).polygonBounds(volume->halfExtent()));
-    addClipPlane(action);
-}
-
-void OrthoSlice::pick(PickAction& action) {
-    if (const auto volume = SliceVolume::fromState(action.state()))
-        pickSlice(action, *volume, orthoPlane(*this, *volume), style());
-    addClipPlane(action);
 }
 
 } // namespace volsg

@@ -5,6 +5,7 @@
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/sections/SlicePlane.h>
 #include <volsg/sections/SliceSampler.h>
 
 namespace volsg {
@@ -28,20 +29,19 @@ public:
     SFEnum clippingSide{this, "clippingSide", clippingSideNames, BACK};
 
     SliceStyle style() const; ///< interpolation and alphaUse as lib/volsg/sections takes them
+    /// The slice's plane through `data` (sliceNumber clamped to it).
+    SlicePlane localPlane(const VolumeGrid& data) const;
 
+    /// With clipping: puts the slice plane in scope as a ClipPlane (kept by this node, not part
+    /// of the graph), so every consumer of ClipPlanes (Volume, ShearWarpVolume, shapes, picking,
+    /// the reference) clips with it unchanged. The slice itself draws before its plane is in
+    /// scope, so it is not clipped by it.
     void doAction(Action& action) override;
-    void render(RenderAction& action) override;
-    void getBoundingBox(BoundingBoxAction& action) override;
-    void pick(PickAction& action) override;
 
 protected:
     ~OrthoSlice() override = default;
 
 private:
-    /// With clipping: puts the slice plane in scope as a ClipPlane (kept by this node, not part
-    /// of the graph), so every consumer of ClipPlanes (Volume, ShearWarpVolume, shapes, picking,
-    /// the reference) clips with it unchanged.
-    void addClipPlane(Action& action);
     /// Made on first use, not in the constructor: fields constructed while a prototype of this
     /// type records its field table would be taken for this node's (NodeType::fields()).
     ref_ptr<ClipPlane> clipPlane_;

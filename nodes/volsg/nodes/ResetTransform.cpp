@@ -1,7 +1,7 @@
 // ResetTransform: Inventor's SoResetTransform.
 #include <volsg/nodes/ResetTransform.h>
 
-#include <volsg/actions/BoundingBoxAction.h>
+#include <volsg/actions/Action.h>
 
 namespace volsg {
 
@@ -9,11 +9,6 @@ const EnumValues ResetTransform::whatToResetNames{{"TRANSFORM", TRANSFORM}, {"BB
 
 void ResetTransform::doAction(Action& action) {
     if (whatToReset() & TRANSFORM) action.state().setModelMatrix(glm::dmat4(1.0));
-}
-
-void ResetTransform::getBoundingBox(BoundingBoxAction& action) {
-    if (whatToReset() & BBOX) action.emptyBoxInScope();
-    doAction(action);
 }
 
 } // namespace volsg

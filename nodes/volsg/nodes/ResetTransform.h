@@ -17,7 +17,6 @@ public:
     SFBitMask whatToReset{this, "whatToReset", whatToResetNames, TRANSFORM};
 
     void doAction(Action& action) override;
-    void getBoundingBox(BoundingBoxAction& action) override;
 
 protected:
     ~ResetTransform() override = default;

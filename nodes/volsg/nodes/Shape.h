@@ -1,6 +1,7 @@
 #pragma once
 // Base of geometry nodes: a shape only says how to build its Mesh; drawing, bounding boxes and
-// picking are done once for all shapes from that mesh (lib/volsg/render/ShapeRenderer).
+// picking are done once for all shapes from that mesh (nodes/volsg/render/ShapeRendering.cpp,
+// the bounding box and pick actions).
 
 #include <cstdint>
 
@@ -17,17 +18,13 @@ public:
 
     /// The mesh for the current state, rebuilt only when meshKey() changes.
     const Mesh& mesh(const State& state) const;
-
-    void render(RenderAction& action) override;
-    void getBoundingBox(BoundingBoxAction& action) override;
-    void pick(PickAction& action) override;
+    /// Identifies everything the mesh depends on; the node's version by default. Shapes that
+    /// read state (IndexedFaceSet reads Coordinate3 and Normal) combine their versions.
+    virtual std::uint64_t meshKey(const State& state) const;
 
 protected:
     ~Shape() override = default;
     virtual void buildMesh(const State& state, Mesh& out) const = 0;
-    /// Identifies everything the mesh depends on; the node's version by default. Shapes that
-    /// read state (IndexedFaceSet reads Coordinate3 and Normal) combine their versions.
-    virtual std::uint64_t meshKey(const State& state) const;
 
 private:
     mutable Mesh mesh_;

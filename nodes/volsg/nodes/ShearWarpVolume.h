@@ -12,10 +12,8 @@
 
 namespace volsg {
 
-class State;
 class VolumeObject;
 class VoxelListOptimizer;
-struct RayCastVolume;
 
 class ShearWarpVolume : public Inherit<Group, ShearWarpVolume> {
 public:
@@ -39,18 +37,14 @@ public:
     /// for its volume k: the objects' voxels come from it instead of the VolumeData in scope.
     SFString voxelFile{this, "voxelFile", ""};
 
-    /// The objects as the engine takes them, from the state at this node (VolumeData,
-    /// TransferFunctions, BoxClip, ClipPlanes above it) and the state nodes among the
-    /// children. Extracts (or reuses) voxel lists. `sources` receives the VolumeObject of each.
-    /// Empty without VolumeData in scope. Throws Error for an invalid TransferFunction.
-    std::vector<ShearWarpObject> gatherObjects(const State& state,
-                                               std::vector<VolumeObject*>* sources = nullptr);
-    /// The reference ray caster's description of this node (ReferenceScene's bridge): one
-    /// volume with a transfer function per object's tag (WHOLE objects: the default), MIP when
-    /// every object is MIP, clip planes and the nearest BoxClip (clippedOpacity of the first
-    /// object as outside opacity). THRESHOLD sources and non-TF render modes have no
-    /// counterpart there; the description is exact for TF-mode DVR/MIP objects.
-    std::optional<RayCastVolume> describeForReference(const State& state);
+    /// Renders `objects` (gathered from the state: gatherShearWarpObjects,
+    /// nodes/volsg/volumescene/ShearWarpObjects.h) with this node's engine, reusing the last
+    /// frame's buffers, and keeps the frame for picking; `sources` are the objects' VolumeObject
+    /// nodes and `model` the model matrix at this node. Hands the lists to the idle-time
+    /// optimizer when `optimize` is on.
+    const ShearWarpFrame& renderFrame(std::vector<ShearWarpObject>& objects,
+                                      const ShearWarpView& view, std::vector<VolumeObject*> sources,
+                                      const glm::dmat4& model);
 
     /// The frame the last render drew (for picking and tests), or null.
     const ShearWarpFrame* lastFrame() const { return lastFrame_.get(); }
@@ -73,9 +67,10 @@ public:
     /// interactiveSliceStep / interactivePlaneScale rounded, in [1, 16].
     int sliceStepFor(bool interactive, double interactivePlaneScale) const;
 
+    /// The folder of the scene file: a relative voxelFile resolves against it.
+    const std::string& directory() const { return directory_; }
+
     void doAction(Action& action) override;
-    void render(RenderAction& action) override;
-    void getBoundingBox(BoundingBoxAction& action) override;
     void readDone(const ReadContext& context) override;
 
     ShearWarpVolume();

@@ -1,13 +1,14 @@
 #pragma once
 // Volume: renders the VolumeData in scope by slicing a 3D texture back to front (the seed's
-// Inventor Volume node), with the TransferFunctions, ClipPlanes and BoxClip in scope.
+// Inventor Volume node), with the TransferFunctions, ClipPlanes and BoxClip in scope
+// (nodes/volsg/render/VolumeRendering.cpp draws it).
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
 #include <volsg/slicing/SlicingStats.h>
 
 namespace volsg {
 
-enum class VolumeRenderMode; // lib/volsg/reference/ReferenceRayCaster.h
+enum class VolumeRenderMode; // lib/volsg/volume/VolumeModel.h
 
 class Volume : public Inherit<Node, Volume> {
 public:
@@ -40,11 +41,9 @@ public:
     /// renderMode as the engines name it.
     VolumeRenderMode mode() const;
 
-    void render(RenderAction& action) override;
-    void getBoundingBox(BoundingBoxAction& action) override;
-
     /// What the last render of this node did (bricks drawn and skipped, uploads, planes).
     const SlicingStats& slicingStats() const { return slicingStats_; }
+    void setSlicingStats(const SlicingStats& stats) { slicingStats_ = stats; }
 
 protected:
     ~Volume() override = default;

@@ -4,7 +4,6 @@
 #include <string>
 
 #include <volsg/actions/Action.h>
-#include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/ReadContext.h>
 #include <volsg/volume/AttractorBasin.h>
@@ -121,14 +120,14 @@ void VolumeData::doAction(Action& action) {
     action.state().add(*this);
 }
 
-void VolumeData::extendBoundingBox(BoundingBoxAction& action) const {
+Box3 VolumeData::localBounds() const {
     const ref_ptr<const VolumeGrid> data = grid();
-    if (!data) return;
-    const glm::dvec3 half = 0.5 * data->extent();
     Box3 box;
+    if (!data) return box;
+    const glm::dvec3 half = 0.5 * data->extent();
     box.extendBy(-half);
     box.extendBy(half);
-    action.extendByLocal(box);
+    return box;
 }
 
 ref_ptr<const VolumeGrid> VolumeData::grid() const {

@@ -5,11 +5,10 @@
 
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
+#include <volsg/math/Box3.h>
 #include <volsg/volume/VolumeGrid.h> // complete: the node holds ref_ptrs to grids
 
 namespace volsg {
-
-class BoundingBoxAction;
 
 class VolumeData : public Inherit<Node, VolumeData> {
 public:
@@ -52,9 +51,9 @@ public:
     /// file and the problem. Not thread-safe: call from one thread at a time.
     /// Virtual: a VolumeSeries (a VolumeData) answers with its current time step.
     virtual ref_ptr<const VolumeGrid> grid() const;
-    /// Extends the action's box by the volume box (centred on the local origin, dimensions *
-    /// spacing); loads the data as grid() does.
-    virtual void extendBoundingBox(BoundingBoxAction& action) const;
+    /// The volume box in local coordinates (centred on the local origin, dimensions *
+    /// spacing; empty without data); loads the data as grid() does.
+    virtual Box3 localBounds() const;
     /// The label volume, or null without tagFileName (or a generator without labels).
     virtual ref_ptr<const VolumeGrid> tagGrid() const;
 

@@ -8,7 +8,6 @@
 #include <vector>
 
 #include <volsg/actions/Action.h>
-#include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/core/Error.h>
 #include <volsg/core/KeyMixing.h>
 #include <volsg/io/ReadContext.h>
@@ -205,7 +204,7 @@ ref_ptr<const VolumeGrid> VolumeSeries::tagGrid() const {
     return cache().volume(shownStep()).tags;
 }
 
-void VolumeSeries::extendBoundingBox(BoundingBoxAction& action) const {
+Box3 VolumeSeries::localBounds() const {
     showCurrent();
     std::optional<glm::dvec3> extent = cache().knownExtent(shownStep());
     if (!extent) extent = lastExtent_; // steps of a series share their box, as a rule
@@ -214,7 +213,7 @@ void VolumeSeries::extendBoundingBox(BoundingBoxAction& action) const {
     Box3 box;
     box.extendBy(-0.5 * *extent);
     box.extendBy(0.5 * *extent);
-    action.extendByLocal(box);
+    return box;
 }
 
 SeriesStepVolume VolumeSeries::upcomingVolume() const {

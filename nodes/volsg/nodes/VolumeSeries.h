@@ -42,7 +42,7 @@ public:
     ref_ptr<const VolumeGrid> tagGrid() const override;
     /// The shown step's box without loading its grid when its lists (or an earlier step's
     /// extent) say it: browsing cached steps never waits for a grid.
-    void extendBoundingBox(BoundingBoxAction& action) const override;
+    Box3 localBounds() const override;
     /// The grids of the step play shows next (direction of play, forward when paused) if they
     /// are in memory already (prefetched), else empty; never loads. The Volume node stages
     /// their texture upload.

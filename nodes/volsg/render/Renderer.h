@@ -12,6 +12,7 @@
 #include <volsg/core/Node.h>
 #include <volsg/image/Image.h>
 #include <volsg/nodes/Camera.h> // RenderOptions holds a ref_ptr<Camera>
+#include <volsg/render/FrameContext.h>
 
 namespace volsg {
 
@@ -30,6 +31,8 @@ struct RenderOptions {
     /// are resolved into the frame's target before the volumes, which then composite against
     /// the resolved depth; the transparent pass is drawn single-sampled. 0 or 1: off.
     int samples = 0;
+    /// Optimisations switched off, to measure them (volsg-bench) or test fallbacks.
+    RenderDebug debug;
 };
 
 /// What a Renderer has done, for tests and the benchmark: a frame where nothing changed

@@ -5,13 +5,11 @@
 
 #include <volsg/actions/Action.h>
 #include <volsg/core/Error.h>
-#include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
-#include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/ShearWarpVolume.h>
-#include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/Volume.h>
-#include <volsg/nodes/VolumeData.h>
+#include <volsg/volumescene/ShearWarpObjects.h>
+#include <volsg/volumescene/VolumeInScope.h>
 
 namespace volsg {
 
@@ -27,8 +25,7 @@ protected:
     void dispatch(Node& node) override {
         // Before its doAction: the state nodes among its children are scoped to it.
         if (node.isA<ShearWarpVolume>())
-            if (auto v = static_cast<ShearWarpVolume&>(node).describeForReference(state()))
-                volumes.push_back(std::move(*v));
+            volumes.push_back(describeShearWarpVolume(static_cast<ShearWarpVolume&>(node), state()));
         node.doAction(*this);
         if (node.isA<Volume>())
             volumes.push_back(describeVolume(static_cast<const Volume&>(node), state()));
@@ -37,32 +34,19 @@ protected:
 
 } // namespace
 
-RayCastVolume describeVolume(const Volume& volume, const State& state) {
-    const VolumeData* data = state.nearestNode<VolumeData>();
-    if (!data) throw Error("Volume without VolumeData in scope");
+RayCastVolume describeVolume(const Volume& volume, VolumeInScope scope) {
     RayCastVolume out;
-    out.data = data->grid();
-    out.tags = data->tagGrid();
-    out.model = state.modelMatrix();
-    // Outermost first, so a later TransferFunction for the same tag replaces an earlier one.
-    for (const StateEntry* entry : state.all<TransferFunction>()) {
-        const auto& tf = static_cast<const TransferFunction&>(*entry->node);
-        if (tf.tag() < -1)
-            throw Error("TransferFunction tag must be -1 (every voxel) or >= 0, got " +
-                        std::to_string(tf.tag()));
-        out.transferFunctions.insert_or_assign(tf.tag(), tf.function());
-    }
+    static_cast<VolumeInScope&>(out) = std::move(scope);
     out.mode = volume.mode();
     for (const glm::vec2& p : volume.planeOpacity.getValues())
         out.planeOpacity.push_back({double(p.x), double(p.y)});
-    // The box is in the BoxClip's own coordinates, which its model matrix maps to world.
-    if (const StateEntry* entry = state.nearest<BoxClip>())
-        out.boxClip = static_cast<const BoxClip&>(*entry->node).describe(entry->model);
-    // ClipPlane::doAction puts only planes that are on in scope.
-    for (const StateEntry* entry : state.all<ClipPlane>())
-        out.clipPlanes.push_back(ClipPlane::worldPlane(
-            static_cast<const ClipPlane&>(*entry->node).plane(), entry->model));
     return out;
+}
+
+RayCastVolume describeVolume(const Volume& volume, const State& state) {
+    std::optional<VolumeInScope> scope = gatherVolumeInScope(state);
+    if (!scope) throw Error("Volume without VolumeData in scope");
+    return describeVolume(volume, std::move(*scope));
 }
 
 std::vector<RayCastVolume> collectVolumes(Node& root) {

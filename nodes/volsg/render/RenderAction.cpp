@@ -1,27 +1,29 @@
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/Light.h>
+#include <volsg/render/BuiltinRendering.h>
 #include <volsg/render/RenderAction.h>
 
 namespace volsg {
 
-// Nodes that only change state (transforms, materials, lights, groups) render by doing it.
-void Node::render(RenderAction& action) {
-    doAction(action);
+ActionMethods& RenderAction::methods() {
+    static ActionMethods* table = [] {
+        auto* t = new ActionMethods(); // never destroyed: methods may run during exit
+        addBuiltinRenderMethods(*t);
+        return t;
+    }();
+    return *table;
 }
 
-RenderAction::RenderAction(NodeCache& cache, ShapeRenderer& shapes, RenderTarget& target,
-                           const RenderView& view, bool interactive)
-    : cache_(cache), shapes_(shapes), target_(target), view_(view), interactive_(interactive) {}
-
 void RenderAction::dispatch(Node& node) {
-    node.render(*this);
+    methods().apply(*this, node);
 }
 
 void RenderAction::lightsInScope(std::vector<SceneLight>& out) const {
     out.clear();
-    if (view_.headlight) {
+    if (frame_.view.headlight) {
         // Along the view direction: towards the light is towards the viewer.
-        const glm::dvec3 back = glm::dvec3(glm::inverse(view_.view) * glm::dvec4(0, 0, 1, 0));
+        const glm::dvec3 back =
+            glm::dvec3(glm::inverse(frame_.view.view) * glm::dvec4(0, 0, 1, 0));
         out.push_back({glm::vec4(glm::vec3(glm::normalize(back)), 0.0f), glm::vec3(1.0f)});
     }
     // Walks the entries directly: State::all() would allocate for every shape.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <volsg/actions/Action.h>
+#include <volsg/actions/ActionMethods.h>
 #include <volsg/math/Ray.h>
 
 namespace volsg {
@@ -43,6 +44,10 @@ struct PickedPoint {
 /// count, as they would not be drawn.
 class PickAction : public Action {
 public:
+    /// The pick methods by node type (see RenderAction::methods()): shapes, slices and glTF
+    /// models test the ray against what they draw.
+    static ActionMethods& methods();
+
     /// The ray through the centre of pixel (x, y) of a viewport of width x height: origin
     /// top-left, y down, pixel (i, j)'s centre at window position (i + 0.5, j + 0.5), so
     /// integer x, y pick whole pixels as the renderer draws them. Seen by the camera given to

@@ -3,7 +3,7 @@
 #include <volsg/gl/GlDebug.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/Light.h>
-#include <volsg/render/NodeCache.h>
+#include <volsg/render/RenderCache.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/RenderTarget.h>
 #include <volsg/render/Renderer.h>
@@ -112,7 +112,7 @@ SceneCamera findOrMakeCamera(Node& root, double viewportAspect) {
 }
 
 struct Renderer::Impl {
-    NodeCache cache;
+    RenderCache cache;
     ShapeRenderer shapes;
     RenderTarget target;
     RenderStats stats;
@@ -164,8 +164,9 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
 
     if (!inViewGroup) cache.beginFrame();
     shapes.beginFrame(view);
-    RenderAction action(cache, shapes, target, view, options.interactive);
-    action.setInteractivePlaneScale(options.interactivePlaneScale);
+    FrameContext frame{cache,    shapes,  target, view, RenderPass::Opaque, options.interactive,
+                       options.interactivePlaneScale, options.debug};
+    RenderAction action(frame);
     for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
         // The multisampled opaque pass is resolved into the target for everything after it.
         if (pass == RenderPass::Volume && multisample) target.resolveMultisample();

@@ -6,6 +6,7 @@
 #include <volsg/io/SceneReader.h>
 #include <volsg/io/Tokenizer.h>
 #include <volsg/io/UnknownNode.h>
+#include <volsg/nodes/BuiltinNodes.h>
 #include <volsg/nodes/Separator.h>
 
 #include <cerrno>
@@ -156,7 +157,7 @@ private:
     // Type { [fields [ ... ]] field values... children... }
     ref_ptr<Node> readNodeBody(const Token& typeToken, const std::string& defName) {
         const std::string& typeName = typeToken.text;
-        const NodeType* type = NodeRegistry::instance().find(typeName);
+        const NodeType* type = nodeTypes().find(typeName);
         const Token& brace = tokens_.peek();
         if (!brace.isPunct('{')) {
             if (!type) tokens_.failAt(typeToken, "unknown node type '" + typeName + "'");

@@ -35,6 +35,9 @@ std::vector<RayCastVolume> collectVolumes(Node& root);
 /// doAction): for whatever else walks a graph and needs the reference's view of a volume, such
 /// as picking a volume by its content. Throws Error as collectVolumes() does.
 RayCastVolume describeVolume(const Volume& volume, const State& state);
+/// The Volume's description from the volume in scope at it (gatherVolumeInScope): its mode
+/// and planeOpacity added.
+RayCastVolume describeVolume(const Volume& volume, VolumeInScope scope);
 
 /// The camera of a render of `root` with these options, as the ray caster takes it: the
 /// options' camera or findOrMakeCamera(), with Camera::projectionMatrix(width / height) as

@@ -14,6 +14,7 @@
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeObject.h>
+#include <volsg/volumescene/ShearWarpObjects.h>
 #include <volsg/voxelfile/PackedVolume.h>
 
 namespace volsg {
@@ -70,7 +71,7 @@ private:
             throw Error("volsg-pack: a ShearWarpVolume draws from voxelFile '" +
                         volume.voxelFile() + "' already: pack the scene with the volume");
         std::vector<VolumeObject*> sources;
-        const std::vector<ShearWarpObject> gathered = volume.gatherObjects(state(), &sources);
+        const std::vector<ShearWarpObject> gathered = gatherShearWarpObjects(volume, state(), &sources);
         std::vector<PackedObject> out;
         const VolumeData* data = state().nearestNode<VolumeData>();
         if (!data || !data->grid())

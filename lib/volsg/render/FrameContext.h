@@ -1,0 +1,77 @@
+#pragma once
+// What a GL engine needs to draw into the frame being rendered: the pass, the camera, the
+// target, the per-context caches and the shape renderer. Traversals (RenderAction, above the
+// node types) fill it; engines in lib/ read it and know nothing of nodes.
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include <volsg/render/RenderCache.h>
+
+namespace volsg {
+
+class RenderTarget;
+class ShapeRenderer;
+
+/// The passes of one frame, in order (docs/DESIGN.md "Rendering is passes"). The Renderer sets
+/// this GL state before each, and whatever changes it restores it:
+/// - Opaque: depth test GL_LESS, depth writes on, blending off. Opaque shapes draw here.
+/// - Volume: depth test GL_LESS against the opaque depth, depth writes off, blending on with
+///   premultiplied colour (GL_ONE, GL_ONE_MINUS_SRC_ALPHA). Volumes draw here.
+/// - Transparent: depth test GL_LESS, depth writes off, blending GL_SRC_ALPHA,
+///   GL_ONE_MINUS_SRC_ALPHA. Shapes with a Material transparency > 0 queue themselves and are
+///   drawn back to front (by the view depth of their centre) at the end of the pass.
+/// Face culling is off in every pass (lighting is two-sided).
+enum class RenderPass { Opaque, Volume, Transparent };
+
+/// The camera of a frame, in world coordinates.
+struct RenderView {
+    glm::dmat4 view{1.0};       ///< world to eye
+    glm::dmat4 projection{1.0}; ///< eye to clip
+    int width = 1, height = 1;  ///< viewport in pixels
+    /// Where the viewer is: the eye position (w = 1, perspective) or the direction towards
+    /// the viewer (w = 0, orthographic).
+    glm::dvec4 viewer{0.0, 0.0, 1.0, 0.0};
+    bool orthographic = false;
+    /// No light is on anywhere in the scene: shapes are lit by a headlight, a directional
+    /// light of intensity 1 along the view direction (as Inventor's viewers do).
+    bool headlight = false;
+};
+
+/// A light as shaders use it, in world coordinates.
+struct SceneLight {
+    glm::vec4 vector{0.0f, 0.0f, 1.0f,
+                     0.0f}; ///< position (w = 1) or direction to the light (w = 0)
+    glm::vec3 color{1.0f};  ///< intensity * colour
+};
+
+/// Switches that turn an optimisation off, to measure what it saves (volsg-bench) or to
+/// exercise a fallback in tests. The defaults are what users get.
+struct RenderDebug {
+    /// Volume: skip the 8^3 cells the transfer function shows nothing of (EmptyCells).
+    bool skipEmptyCells = true;
+    /// Volume: stage a VolumeSeries' next step in a pixel unpack buffer while this one shows.
+    bool textureStaging = true;
+    /// Volume: bricks no larger than this per side (0: the driver's GL_MAX_3D_TEXTURE_SIZE);
+    /// only ever lowers the driver's limit, to test bricking at small sizes.
+    int max3DTextureSize = 0;
+    /// ShearWarpVolume: the widest vector kernels this CPU runs (false: the scalar ones).
+    bool vectorKernels = true;
+};
+
+/// The frame being drawn, as engines see it.
+struct FrameContext {
+    RenderCache& cache;
+    ShapeRenderer& shapes;
+    RenderTarget& target;
+    RenderView view;
+    RenderPass pass = RenderPass::Opaque;
+    /// The user is moving the view: volumes use their fast settings.
+    bool interactive = false;
+    /// While interactive: the factor on the volumes' interactive plane count, in (0, 1].
+    double interactivePlaneScale = 1.0;
+    RenderDebug debug;
+};
+
+} // namespace volsg

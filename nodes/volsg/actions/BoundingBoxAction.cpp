@@ -1,0 +1,105 @@
+#include <volsg/actions/BoundingBoxAction.h>
+#include <volsg/gltf/GltfAsset.h>
+#include <volsg/nodes/GltfModel.h>
+#include <volsg/nodes/ObliqueSlice.h>
+#include <volsg/nodes/OrthoSlice.h>
+#include <volsg/nodes/ResetTransform.h>
+#include <volsg/nodes/Separator.h>
+#include <volsg/nodes/Shape.h>
+#include <volsg/nodes/ShearWarpVolume.h>
+#include <volsg/nodes/Volume.h>
+#include <volsg/nodes/VolumeData.h>
+#include <volsg/volumescene/VolumeInScope.h>
+#include <volsg/voxelfile/PackedVolume.h>
+
+namespace volsg {
+
+namespace {
+
+void boundShape(BoundingBoxAction& action, Shape& shape) {
+    action.extendByLocal(shape.mesh(action.state()).bounds());
+}
+
+void boundVolume(BoundingBoxAction& action, Volume&) {
+    if (const VolumeData* data = action.state().nearestNode<VolumeData>())
+        action.extendByLocal(data->localBounds());
+}
+
+void boundShearWarpVolume(BoundingBoxAction& action, ShearWarpVolume& node) {
+    if (!node.voxelFile().empty()) {
+        action.extendByLocal(PackedVolume::load(node.voxelFile(), node.directory()).localBounds());
+        return;
+    }
+    if (const VolumeData* data = action.state().nearestNode<VolumeData>())
+        action.extendByLocal(data->localBounds());
+}
+
+void boundOrthoSlice(BoundingBoxAction& action, OrthoSlice& slice) {
+    if (const auto volume = gatherVolumeInScope(action.state()))
+        action.extendByLocal(slice.localPlane(*volume->data).polygonBounds(volume->halfExtent()));
+    slice.doAction(action);
+}
+
+void boundObliqueSlice(BoundingBoxAction& action, ObliqueSlice& slice) {
+    const auto plane = slice.localPlane();
+    if (!plane) return;
+    if (const auto volume = gatherVolumeInScope(action.state()))
+        action.extendByLocal(plane->polygonBounds(volume->halfExtent()));
+}
+
+void boundGltfModel(BoundingBoxAction& action, GltfModel& model) {
+    action.extendByLocal(model.asset().bounds);
+}
+
+void boundResetTransform(BoundingBoxAction& action, ResetTransform& node) {
+    if (node.whatToReset() & ResetTransform::BBOX) action.emptyBoxInScope();
+    node.doAction(action);
+}
+
+} // namespace
+
+ActionMethods& BoundingBoxAction::methods() {
+    static ActionMethods* table = [] {
+        auto* t = new ActionMethods(); // never destroyed: methods may run during exit
+        t->add(&boundShape);
+        t->add(&boundVolume);
+        t->add(&boundShearWarpVolume);
+        t->add(&boundOrthoSlice);
+        t->add(&boundObliqueSlice);
+        t->add(&boundGltfModel);
+        t->add(&boundResetTransform);
+        return t;
+    }();
+    return *table;
+}
+
+void BoundingBoxAction::extendByLocal(const Box3& local) {
+    box_.extendBy(local, state().modelMatrix());
+}
+
+void BoundingBoxAction::beginTraversal(Node& root) {
+    box_ = Box3{};
+    Action::beginTraversal(root);
+}
+
+void BoundingBoxAction::dispatch(Node& node) {
+    if (!node.isA<Separator>()) {
+        methods().apply(*this, node);
+        return;
+    }
+    // A Separator's children start from an empty box and the box from before it is added back
+    // after them, so emptyBoxInScope() inside it forgets only what its own children added.
+    Box3 before = box_;
+    box_ = Box3{};
+    methods().apply(*this, node);
+    before.extendBy(box_);
+    box_ = before;
+}
+
+Box3 computeBoundingBox(Node& root) {
+    BoundingBoxAction action;
+    action.apply(root);
+    return action.boundingBox();
+}
+
+} // namespace volsg

@@ -1,0 +1,281 @@
+#include <volsg/actions/PickAction.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <volsg/geometry/RayIntersect.h>
+#include <volsg/gltf/GltfAsset.h>
+#include <volsg/nodes/BoxClip.h>
+#include <volsg/nodes/Camera.h>
+#include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/GltfModel.h>
+#include <volsg/nodes/ObliqueSlice.h>
+#include <volsg/nodes/OrthoSlice.h>
+#include <volsg/nodes/Shape.h>
+#include <volsg/render/Renderer.h>
+#include <volsg/sections/SliceSampler.h>
+#include <volsg/volumescene/VolumeInScope.h>
+
+namespace volsg {
+
+namespace {
+
+void pickShape(PickAction& action, Shape& shape) {
+    const Mesh& m = shape.mesh(action.state());
+    if (m.primitive != Mesh::Primitive::Triangles || m.indices.size() < 3) return;
+    const glm::dmat4& model = action.state().modelMatrix();
+    const double det = glm::determinant(model);
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return; // flattened: nothing to hit
+    // Ray::transformed keeps t, so t stays the world distance along the (unit) world ray.
+    const Ray local = action.worldRay().transformed(glm::inverse(model));
+    const bool smooth = m.normals.size() == m.positions.size();
+    const std::size_t triangles = m.indices.size() / 3;
+    for (std::size_t i = 0; i < triangles; ++i) {
+        const std::uint32_t ia = m.indices[3 * i], ib = m.indices[3 * i + 1],
+                            ic = m.indices[3 * i + 2];
+        if (ia >= m.positions.size() || ib >= m.positions.size() || ic >= m.positions.size())
+            continue;
+        const glm::dvec3 a(m.positions[ia]), b(m.positions[ib]), c(m.positions[ic]);
+        const auto hit = intersectTriangle(local, a, b, c);
+        if (!hit) continue;
+        glm::dvec3 normal(0.0);
+        if (smooth)
+            normal = (1.0 - hit->u - hit->v) * glm::dvec3(m.normals[ia]) +
+                     hit->u * glm::dvec3(m.normals[ib]) + hit->v * glm::dvec3(m.normals[ic]);
+        if (!(glm::length(normal) > 0.0)) normal = glm::cross(b - a, c - a);
+        const glm::dvec3 point = (1.0 - hit->u - hit->v) * a + hit->u * b + hit->v * c;
+        action.addLocalHit(point, glm::normalize(normal), i);
+    }
+}
+
+/// Hits the slice where the ray crosses its polygon inside the volume box and the slice is
+/// drawn there (not discarded by its alpha use), reporting the voxel and data value
+/// (PickedVoxel) with the plane's normal.
+void pickSlice(PickAction& action, const VolumeInScope& volume, const SlicePlane& plane,
+               const SliceStyle& style) {
+    const Ray localRay = action.worldRay().transformed(glm::inverse(volume.model));
+    const auto t = plane.intersect(localRay, volume.halfExtent());
+    if (!t) return;
+    const glm::dvec3 local = localRay.at(*t);
+    const SliceSample s = SliceSampler(volume, style).sample(local);
+    if (s.discarded()) return;
+    action.addLocalHit(local, plane.normal, 0, PickedVoxel{s.voxel, s.voxelValue, s.value, s.tag});
+}
+
+void pickOrthoSlice(PickAction& action, OrthoSlice& slice) {
+    if (const auto volume = gatherVolumeInScope(action.state()))
+        pickSlice(action, *volume, slice.localPlane(*volume->data), slice.style());
+    slice.doAction(action);
+}
+
+void pickObliqueSlice(PickAction& action, ObliqueSlice& slice) {
+    const auto plane = slice.localPlane();
+    if (!plane) return;
+    if (const auto volume = gatherVolumeInScope(action.state()))
+        pickSlice(action, *volume, *plane, slice.style());
+}
+
+/// Whether the ray (t >= 0) meets the box at all: the slab test, to skip whole primitives.
+bool rayMeetsBox(const Ray& ray, const Box3& box) {
+    double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+        if (ray.direction[a] == 0.0) {
+            if (ray.origin[a] < box.min[a] || ray.origin[a] > box.max[a]) return false;
+            continue;
+        }
+        double near = (box.min[a] - ray.origin[a]) / ray.direction[a];
+        double far = (box.max[a] - ray.origin[a]) / ray.direction[a];
+        if (near > far) std::swap(near, far);
+        t0 = std::max(t0, near);
+        t1 = std::min(t1, far);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+void pickGltfModel(PickAction& action, GltfModel& model) {
+    const GltfAsset& a = model.asset();
+    const glm::dmat4& nodeModel = action.state().modelMatrix();
+    const StateEntry* boxEntry = action.state().nearest<BoxClip>();
+    std::size_t first = 0; // flat index of the instance's primitive's first triangle
+    for (const GltfInstance& instance : a.instances) {
+        const GltfMesh& mesh = a.meshes[std::size_t(instance.mesh)];
+        const glm::dmat4 model = nodeModel * instance.matrix;
+        const double det = glm::determinant(glm::dmat3(model));
+        const bool invertible = std::abs(det) > 0.0 && std::isfinite(det);
+        const Ray local = invertible ? action.worldRay().transformed(glm::inverse(model)) : Ray{};
+        const glm::dmat3 normalToNode = glm::transpose(glm::inverse(glm::dmat3(instance.matrix)));
+        for (const GltfPrimitive& p : mesh.primitives) {
+            const std::size_t triangles = p.triangleCount();
+            if (!invertible || triangles == 0 || !rayMeetsBox(local, p.bounds)) {
+                first += triangles;
+                continue;
+            }
+            const bool smooth = p.normals.size() == p.positions.size();
+            for (std::size_t i = 0; i < triangles; ++i) {
+                const std::uint32_t ia = p.indices[3 * i], ib = p.indices[3 * i + 1],
+                                    ic = p.indices[3 * i + 2];
+                const glm::dvec3 A(p.positions[ia]), B(p.positions[ib]), C(p.positions[ic]);
+                const auto hit = intersectTriangle(local, A, B, C);
+                if (!hit) continue;
+                const double w = 1.0 - hit->u - hit->v;
+                const glm::dvec3 point = w * A + hit->u * B + hit->v * C;
+                if (boxEntry) { // BoxClip opacity 0 removes geometry for picking too
+                    const auto& box = static_cast<const BoxClip&>(*boxEntry->node);
+                    const glm::dvec3 world(model * glm::dvec4(point, 1.0));
+                    const glm::dvec3 q(glm::inverse(boxEntry->model) * glm::dvec4(world, 1.0));
+                    const glm::dvec3 lo(glm::min(box.origin(), box.origin() + box.extent()));
+                    const glm::dvec3 hi(glm::max(box.origin(), box.origin() + box.extent()));
+                    const bool inside = glm::all(glm::greaterThanEqual(q, lo)) &&
+                                        glm::all(glm::lessThanEqual(q, hi));
+                    if ((inside ? box.insideOpacity() : box.outsideOpacity()) <= 0.0f) continue;
+                }
+                glm::dvec3 normal(0.0);
+                if (smooth)
+                    normal = w * glm::dvec3(p.normals[ia]) + hit->u * glm::dvec3(p.normals[ib]) +
+                             hit->v * glm::dvec3(p.normals[ic]);
+                if (!(glm::length(normal) > 0.0)) normal = glm::cross(B - A, C - A);
+                action.addLocalHit(glm::dvec3(instance.matrix * glm::dvec4(point, 1.0)),
+                                   normalToNode * normal, first + i);
+            }
+            first += triangles;
+        }
+    }
+}
+
+bool isFinite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+glm::dvec3 project(const glm::dmat4& m, const glm::dvec3& p) {
+    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+    return glm::dvec3(h) / h.w;
+}
+
+/// The ray of a pixel, from view and projection matrices. The pixel centre is unprojected at
+/// the near (NDC z = -1) and far (z = +1) planes; where that line crosses the eye plane
+/// (eye z = 0) is the camera: the eye point for a perspective projection, a point of the
+/// camera's plane for an orthographic one. Works for any invertible projection.
+struct PixelRay {
+    Ray ray;
+    double nearDistance = 0.0, farDistance = 0.0;
+    bool valid = false;
+};
+PixelRay rayThroughPixel(const glm::dmat4& view, const glm::dmat4& projection, double x, double y,
+                         int width, int height) {
+    PixelRay out;
+    const double ndcX = 2.0 * (x + 0.5) / width - 1.0;
+    const double ndcY = 1.0 - 2.0 * (y + 0.5) / height;
+    const glm::dmat4 eyeFromClip = glm::inverse(projection);
+    const glm::dvec3 eyeNear = project(eyeFromClip, {ndcX, ndcY, -1.0});
+    const glm::dvec3 eyeFar = project(eyeFromClip, {ndcX, ndcY, 1.0});
+    const double dz = eyeFar.z - eyeNear.z;
+    if (!isFinite(eyeNear) || !isFinite(eyeFar) || dz == 0.0) return out;
+    const glm::dvec3 eyeOrigin = eyeNear + (-eyeNear.z / dz) * (eyeFar - eyeNear);
+
+    const glm::dmat4 worldFromEye = glm::inverse(view);
+    const glm::dvec3 origin = project(worldFromEye, eyeOrigin);
+    const glm::dvec3 nearPoint = project(worldFromEye, eyeNear);
+    const glm::dvec3 farPoint = project(worldFromEye, eyeFar);
+    const glm::dvec3 along = farPoint - nearPoint;
+    const double length = glm::length(along);
+    if (!isFinite(origin) || !(length > 0.0) || !std::isfinite(length)) return out;
+    out.ray = {origin, along / length};
+    out.nearDistance = glm::dot(nearPoint - origin, out.ray.direction);
+    out.farDistance = glm::dot(farPoint - origin, out.ray.direction);
+    out.valid = true;
+    return out;
+}
+
+} // namespace
+
+void PickAction::setPixel(double x, double y, int width, int height) {
+    hasPixel_ = true;
+    px_ = x;
+    py_ = y;
+    width_ = width;
+    height_ = height;
+}
+
+void PickAction::setCamera(ref_ptr<Camera> camera, const glm::dmat4& cameraModel) {
+    camera_ = std::move(camera);
+    cameraModel_ = cameraModel;
+}
+
+void PickAction::setRay(const Ray& worldRay, double nearDistance, double farDistance) {
+    hasPixel_ = false;
+    const double length = glm::length(worldRay.direction);
+    rayValid_ = length > 0.0 && std::isfinite(length) && isFinite(worldRay.origin);
+    worldRay_ = {worldRay.origin, rayValid_ ? worldRay.direction / length : worldRay.direction};
+    near_ = nearDistance;
+    far_ = farDistance;
+}
+
+void PickAction::beginTraversal(Node& root) {
+    picked_.reset();
+    if (hasPixel_) {
+        rayValid_ = false;
+        if (width_ <= 0 || height_ <= 0) return;
+        const double aspect = double(width_) / double(height_);
+        ref_ptr<Camera> camera = camera_;
+        glm::dmat4 cameraModel = cameraModel_;
+        if (!camera) {
+            SceneCamera scene = findOrMakeCamera(root, aspect);
+            camera = scene.camera;
+            cameraModel = scene.model;
+        }
+        if (!camera) return;
+        const PixelRay pr =
+            rayThroughPixel(camera->viewMatrix(cameraModel), camera->projectionMatrix(aspect), px_,
+                            py_, width_, height_);
+        if (!pr.valid) return;
+        worldRay_ = pr.ray;
+        near_ = pr.nearDistance;
+        far_ = pr.farDistance;
+        rayValid_ = true;
+    }
+    if (!rayValid_) return;
+    Action::beginTraversal(root);
+}
+
+ActionMethods& PickAction::methods() {
+    static ActionMethods* table = [] {
+        auto* t = new ActionMethods(); // never destroyed: methods may run during exit
+        t->add(&pickShape);
+        t->add(&pickOrthoSlice);
+        t->add(&pickObliqueSlice);
+        t->add(&pickGltfModel);
+        return t;
+    }();
+    return *table;
+}
+
+void PickAction::dispatch(Node& node) {
+    methods().apply(*this, node);
+}
+
+void PickAction::addLocalHit(const glm::dvec3& localPoint, const glm::dvec3& localNormal,
+                             std::size_t primitiveIndex, std::optional<PickedVoxel> voxel) {
+    const glm::dmat4& model = state().modelMatrix();
+    const glm::dvec3 point(model * glm::dvec4(localPoint, 1.0));
+    const double distance = glm::dot(point - worldRay_.origin, worldRay_.direction);
+    if (!(distance >= near_ && distance <= far_)) return;
+    if (picked_ && !(distance < picked_->distance)) return; // ties: the first one stays
+
+    for (const StateEntry* entry : state().all<ClipPlane>()) {
+        const auto& clip = static_cast<const ClipPlane&>(*entry->node);
+        const glm::dvec4 plane = ClipPlane::worldPlane(clip.plane(), entry->model);
+        if (glm::dot(glm::dvec3(plane), point) < plane.w) return;
+    }
+
+    // Normals are covectors: they transform by the inverse transpose.
+    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(model)));
+    glm::dvec3 normal = normalMatrix * localNormal;
+    const double length = glm::length(normal);
+    normal = length > 0.0 ? normal / length : glm::dvec3(0.0);
+
+    picked_ = PickedPoint{point, normal, distance, path(), primitiveIndex, voxel};
+}
+
+} // namespace volsg

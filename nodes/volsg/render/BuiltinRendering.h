@@ -1,0 +1,23 @@
+#pragma once
+// The render methods of the library's node types, one file per family
+// (nodes/volsg/render/*Rendering.cpp).
+
+#include <volsg/actions/ActionMethods.h>
+
+namespace volsg {
+
+void addShapeRenderMethods(ActionMethods& methods);
+void addVolumeRenderMethods(ActionMethods& methods);
+void addShearWarpRenderMethods(ActionMethods& methods);
+void addSliceRenderMethods(ActionMethods& methods);
+void addGltfRenderMethods(ActionMethods& methods);
+
+inline void addBuiltinRenderMethods(ActionMethods& methods) {
+    addShapeRenderMethods(methods);
+    addVolumeRenderMethods(methods);
+    addShearWarpRenderMethods(methods);
+    addSliceRenderMethods(methods);
+    addGltfRenderMethods(methods);
+}
+
+} // namespace volsg
