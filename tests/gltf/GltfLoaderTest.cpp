@@ -22,7 +22,7 @@ using namespace volsg::test;
 namespace {
 
 std::string sample(const std::string& relative) {
-    return std::string(VOLSG_SHARED_DIR) + "/data/gltf/" + relative;
+    return std::string(VOLSG_DATA_DIR) + "/gltf/" + relative;
 }
 
 /// The union of every primitive's POSITION box, in mesh coordinates (what the README lists).

@@ -48,7 +48,7 @@ struct Offscreen {
 };
 
 std::string sample(const std::string& relative) {
-    return std::string(VOLSG_SHARED_DIR) + "/data/gltf/" + relative;
+    return std::string(VOLSG_DATA_DIR) + "/gltf/" + relative;
 }
 
 /// Keeps an image for a look when VOLSG_TEST_IMAGES names a folder.

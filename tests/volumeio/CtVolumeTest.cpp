@@ -116,7 +116,7 @@ std::string littleEndianSha256(const VolumeGrid& grid) {
 }
 
 std::string sharedData(const std::string& relative) {
-    return std::string(VOLSG_SHARED_DIR) + "/data/" + relative;
+    return std::string(VOLSG_DATA_DIR) + "/" + relative;
 }
 
 } // namespace

@@ -14,7 +14,7 @@ GLX, so run it under Xvfb (which gives llvmpipe, as volsg's OSMesa backend):
 
     xvfb-run -a -s "-screen 0 1024x768x24" /usr/bin/python3 viewer/vtk/vtk_volume_bench.py DIR
 
-How the rendering model of SCENE-FORMAT.md section 4 is mapped:
+How the rendering model of docs/SCENE-FORMAT.md section 4 is mapped:
 - Transfer function: every control point of the colour channels (their union, all three
   channels evaluated there: exact, since each is linear between them) and of alpha, moved from
   v to data values through dataRange; VTK clamps beyond the ends as v does.
