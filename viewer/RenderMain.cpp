@@ -22,7 +22,7 @@ const char* usage =
     "                    [--background R,G,B] [--reference [--tolerance T]]\n"
     "                    [--stereo anaglyph|side-by-side [--eye-separation F]]\n"
     "                    [--interactive]\n"
-    "  --reference   render the volumes with the CPU reference ray caster (SCENE-FORMAT.md\n"
+    "  --reference   render the volumes with the CPU reference ray caster (docs/SCENE-FORMAT.md\n"
     "                section 4) over GL's opaque geometry; prints the error bound reached\n"
     "  --tolerance   the reference's per-pixel convergence tolerance (default 1e-4)\n"
     "  --stereo      a stereo pair of the scene camera: red-cyan anaglyph (red = left eye) or\n"

@@ -5,12 +5,12 @@ find_package(glm REQUIRED)
 find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED COMPONENTS EGL)
 find_package(ZLIB REQUIRED)
-# glTF loading: Debian's tinygltf is a shared library, so no TINYGLTF_IMPLEMENTATION anywhere
-# (ENVIRONMENT.md 4).
+# glTF loading: Debian's tinygltf is a shared library (target TinyGLTF::TinyGLTF), so no
+# TINYGLTF_IMPLEMENTATION anywhere.
 find_package(TinyGLTF REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 # Dear ImGui for the viewer's editor panels: Debian ships a static libimgui.a with the GLFW and
-# OpenGL3 backends compiled in and no CMake config (ENVIRONMENT.md 6).
+# OpenGL3 backends compiled in and no CMake config.
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 if(VOLSG_BUILD_TESTS)
   find_package(doctest REQUIRED)

@@ -1,4 +1,4 @@
-// The glTF loader without GL: the real sample files of ../shared/data/gltf against what their
+// The glTF loader without GL: the real sample files of examples/data/gltf against what their
 // JSON defines, small written files for each feature, and every kind of broken file.
 #include <doctest/doctest.h>
 

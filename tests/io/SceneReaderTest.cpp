@@ -39,7 +39,7 @@ std::filesystem::path scratchFolder(const std::string& name) {
 
 } // namespace
 
-TEST_CASE("the SCENE-FORMAT example reads into the expected nodes and fields") {
+TEST_CASE("the docs/SCENE-FORMAT.md example reads into the expected nodes and fields") {
     auto root = readSceneFromString(R"(#Inventor V2.1 ascii
 # comment to end of line
 Separator {

@@ -1,4 +1,4 @@
-// The Volume node's 3D-texture slicing against the reference ray caster (SCENE-FORMAT.md 4):
+// The Volume node's 3D-texture slicing against the reference ray caster (docs/SCENE-FORMAT.md 4):
 // render modes, opacity correction, precision, data types and grid shapes.
 #include "SlicingTestSupport.h"
 

@@ -1,4 +1,4 @@
-// The real CT volumes in ../shared/data: loaded through the raw gzip reader and checked against
+// The real CT volumes in examples/data: loaded through the raw gzip reader and checked against
 // what their vtk.js index.json files say (dimensions, spacing, value range) and against the
 // SHA-256 of the decompressed bytes as `gunzip | sha256sum` prints it.
 

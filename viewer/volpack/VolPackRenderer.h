@@ -52,7 +52,7 @@ struct Shading {
 ///   holds (round(255 A) + 0.25) / 255 so that the stored byte is round(255 A), the nearest
 ///   level. VolPack then corrects it per view for the path through one slice,
 ///   1 - (1 - a)^sqrt(1 + shear_i^2 + shear_j^2), which for voxels of the smallest spacing is
-///   exactly SCENE-FORMAT section 4's 1 - (1 - A)^(ds / L0).
+///   exactly docs/SCENE-FORMAT.md section 4's 1 - (1 - A)^(ds / L0).
 /// - Voxels whose opacity rounds to 0 are left out (VP_MIN_VOXEL_OPACITY = 0.5/255).
 /// Differences that remain: VolPack classifies voxels, then interpolates colour and opacity
 /// bilinearly in each slice (the model interpolates data, then classifies); it samples once per

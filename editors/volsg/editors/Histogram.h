@@ -1,6 +1,6 @@
 #pragma once
 // The data histogram drawn under a transfer-function editor: voxel counts over the normalised
-// value v of SCENE-FORMAT section 4, on a linear or a log scale.
+// value v of docs/SCENE-FORMAT.md section 4, on a linear or a log scale.
 
 #include <cstdint>
 #include <vector>

@@ -54,7 +54,7 @@ public:
     /// (recomputed when that range or the data changes).
     const Histogram& histogram();
     /// The data range the selected function maps to [0, 1]: dataRange when it is set, else
-    /// the data type's range (SCENE-FORMAT 3).
+    /// the data type's range (docs/SCENE-FORMAT.md 3).
     glm::dvec2 effectiveDataRange() const;
 
 private:

@@ -1,5 +1,5 @@
 #pragma once
-// The concrete field types of SCENE-FORMAT section 1: SF* single values and MF* lists.
+// The concrete field types of docs/SCENE-FORMAT.md section 1: SF* single values and MF* lists.
 
 #include <cstdint>
 #include <initializer_list>

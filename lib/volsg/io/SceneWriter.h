@@ -1,5 +1,5 @@
 #pragma once
-// Writes node graphs as Inventor ASCII scene files (SCENE-FORMAT.md section 1).
+// Writes node graphs as Inventor ASCII scene files (docs/SCENE-FORMAT.md section 1).
 
 #include <iosfwd>
 #include <string>

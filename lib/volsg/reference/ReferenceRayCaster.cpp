@@ -19,7 +19,7 @@ namespace volsg {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-/// SCENE-FORMAT.md section 4: A is clamped so that tau stays finite.
+/// docs/SCENE-FORMAT.md section 4: A is clamped so that tau stays finite.
 constexpr double kMaxOpacity = 1.0 - 1e-6;
 /// Early ray termination: what is left behind changes the pixel by less than this.
 constexpr double kStopTransmittance = 1e-7;

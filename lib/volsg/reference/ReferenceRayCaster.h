@@ -1,5 +1,5 @@
 #pragma once
-// The CPU reference ray caster: the image of SCENE-FORMAT.md section 4, to a known tolerance.
+// The CPU reference ray caster: the image of docs/SCENE-FORMAT.md section 4, to a known tolerance.
 // Every fast volume path measures its error against this one.
 
 #include <optional>
@@ -72,7 +72,7 @@ struct RayCastResult {
     bool converged = true; ///< every pixel met the stopping rule within maxHalvings
 };
 
-/// Computes the image of SCENE-FORMAT.md section 4 in double precision:
+/// Computes the image of docs/SCENE-FORMAT.md section 4 in double precision:
 ///
 /// - L0 = the smallest spacing of a volume (local units); `tau(v) = -ln(1 - min(A(v), 1 - 1e-6))
 ///   / L0` times the modifiers (clip planes, BoxClip, planeOpacity); the emitted colour is

@@ -14,7 +14,7 @@ namespace volsg {
 class RenderTarget;
 class ShapeRenderer;
 
-/// The passes of one frame, in order (docs/DESIGN.md "Rendering is passes"). The Renderer sets
+/// The passes of one frame, in order (docs/SCENE-FORMAT.md section 4.8). The Renderer sets
 /// this GL state before each, and whatever changes it restores it:
 /// - Opaque: depth test GL_LESS, depth writes on, blending off. Opaque shapes draw here.
 /// - Volume: depth test GL_LESS against the opaque depth, depth writes off, blending on with

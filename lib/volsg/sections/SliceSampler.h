@@ -32,7 +32,7 @@ struct SliceSample {
     bool discarded() const { return !(rgba.a > 0.0); } ///< fully transparent: not drawn
 };
 
-/// SCENE-FORMAT.md section 4's sampling and classification of one volume: data trilinear
+/// docs/SCENE-FORMAT.md section 4's sampling and classification of one volume: data trilinear
 /// between voxel centres and clamped to the edge beyond the outermost ones, non-finite Float
 /// voxels replaced by the grid's finite minimum (NaN, -Inf) or maximum (+Inf) first, tags
 /// nearest; the transfer function of the voxel's tag (else tag -1's, else the identity ramp),

@@ -677,7 +677,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                         const int colBase = int(e.offset.x) + iu0;
                         // In-piece coordinates of the volume's side faces (256: not in this piece).
                         // Data is clamped to the edge up to the box face, half a voxel out, and
-                        // nothing lies beyond (SCENE-FORMAT section 4): the pixel on a face voxel's
+                        // nothing lies beyond (docs/SCENE-FORMAT.md section 4): the pixel on a face voxel's
                         // outer side takes its full value inside the face, none outside.
                         const unsigned edgeA0 = e.offset.x == 0 ? 0u : 256u;
                         const unsigned edgeB0 = e.offset.y == 0 ? 0u : 256u;
@@ -976,7 +976,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
         return global_[std::size_t(v) * std::size_t(W) + std::size_t(u)];
     };
     // Between the outermost voxel centres and the box faces the data is clamped to the edge
-    // (SCENE-FORMAT section 4). Along an unsheared intermediate axis the rays are parallel to
+    // (docs/SCENE-FORMAT.md section 4). Along an unsheared intermediate axis the rays are parallel to
     // the box's side faces: a ray within half a voxel outside the outermost voxel column sees
     // that column's values all along, so the warp clamps to it (exact). Along a sheared axis the
     // silhouette is slanted and clamping would smear it; there the warp blends towards empty

@@ -6,7 +6,7 @@
 namespace volsg {
 
 namespace {
-/// SCENE-FORMAT.md section 4: A is clamped so that tau stays finite.
+/// docs/SCENE-FORMAT.md section 4: A is clamped so that tau stays finite.
 constexpr double kMaxOpacity = 1.0 - 1e-6;
 } // namespace
 

@@ -27,7 +27,7 @@ uniform sampler2D uTable;
 
 vec2 rangeOf(int row) { return texelFetch(uTable, ivec2(ENTRIES + 1, row), 0).rg; }
 
-// SCENE-FORMAT 4: v = clamp((d - lo) / (hi - lo), 0, 1); hi == lo is a step at lo.
+// docs/SCENE-FORMAT.md 4: v = clamp((d - lo) / (hi - lo), 0, 1); hi == lo is a step at lo.
 float normalised(float d, vec2 range) {
     if (range.x == range.y) return d >= range.x ? 1.0 : 0.0;
     return clamp((d - range.x) / (range.y - range.x), 0.0, 1.0);

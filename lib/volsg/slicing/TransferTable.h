@@ -32,7 +32,7 @@ public:
     static constexpr int kWidth = kEntries + 2;
     static constexpr int kTagMapSide = 256;
 
-    /// SCENE-FORMAT.md section 4: A is clamped so that tau stays finite.
+    /// docs/SCENE-FORMAT.md section 4: A is clamped so that tau stays finite.
     static constexpr double kMaxOpacity = 1.0 - 1e-6;
     /// tau L0 = -ln(1 - min(A, 1 - 1e-6)), 0 for A <= 0.
     static double opticalDepthPerL0(double A);

@@ -12,7 +12,7 @@ namespace volsg {
 
 class VolumeGrid;
 
-/// SCENE-FORMAT.md section 3/4: `v = clamp((d - lo) / (hi - lo), 0, 1)` with `dataRange lo hi`
+/// docs/SCENE-FORMAT.md section 3/4: `v = clamp((d - lo) / (hi - lo), 0, 1)` with `dataRange lo hi`
 /// (when unset, the data type's natural range of the grid it is applied to); four
 /// piecewise-linear channels of (v, output) control points, constant beyond the end points.
 /// Outputs are clamped to [0, 1] when set. A channel needs at least one point. The default is

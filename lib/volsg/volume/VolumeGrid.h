@@ -15,7 +15,7 @@
 
 namespace volsg {
 
-/// The element types a volume file can hold (SCENE-FORMAT.md section 3).
+/// The element types a volume file can hold (docs/SCENE-FORMAT.md section 3).
 enum class VoxelType { UByte, UShort, Short, Float };
 
 const char* voxelTypeName(VoxelType type); ///< "UBYTE", "USHORT", "SHORT", "FLOAT"
@@ -55,7 +55,7 @@ public:
     const glm::dvec3& spacing() const { return spacing_; }
     void setSpacing(glm::dvec3 spacing); ///< throws Error unless each component is finite and > 0
     glm::dvec3 extent() const { return glm::dvec3(dimensions_) * spacing_; }
-    double smallestSpacing() const;                    ///< L0 of SCENE-FORMAT.md section 4
+    double smallestSpacing() const;                    ///< L0 of docs/SCENE-FORMAT.md section 4
     glm::dvec3 voxelCenter(int i, int j, int k) const; ///< in local coordinates
     bool isLabelType() const { return type_ == VoxelType::UByte || type_ == VoxelType::UShort; }
 

@@ -18,7 +18,7 @@ namespace volsg {
 
 enum class VolumeRenderMode { DVR, MIP, MINIP, AVERAGE };
 
-/// SCENE-FORMAT.md section 3 BoxClip. The box [origin, origin + extent] is in the volume's
+/// docs/SCENE-FORMAT.md section 3 BoxClip. The box [origin, origin + extent] is in the volume's
 /// local coordinates, or, when `model` is set, in coordinates that `model` maps to world.
 /// Inside the box tau is multiplied by insideOpacity and the colour is blended
 /// `mix(C, insideColor, insideColorWeight)`; outside likewise with the outside values. A

@@ -11,7 +11,7 @@
 
 namespace volsg {
 
-/// What a raw file cannot say about itself (SCENE-FORMAT.md section 3, VolumeData's raw fields).
+/// What a raw file cannot say about itself (docs/SCENE-FORMAT.md section 3, VolumeData's raw fields).
 struct RawVolumeLayout {
     glm::ivec3 dimensions{0};
     VoxelType type = VoxelType::UByte;

@@ -34,7 +34,7 @@ public:
     void checkObjectCount(std::size_t count) const;
     std::size_t objectCount() const { return objects_.size(); }
 
-    /// The volume's box in local coordinates (SCENE-FORMAT.md section 4), from the stored
+    /// The volume's box in local coordinates (docs/SCENE-FORMAT.md section 4), from the stored
     /// dimensions and spacing.
     Box3 localBounds() const;
 

@@ -1,5 +1,5 @@
 #pragma once
-// Reads Inventor ASCII scene files (SCENE-FORMAT.md section 1) into node graphs.
+// Reads Inventor ASCII scene files (docs/SCENE-FORMAT.md section 1) into node graphs.
 
 #include <cstdint>
 #include <string>

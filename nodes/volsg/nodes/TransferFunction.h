@@ -1,6 +1,6 @@
 #pragma once
 // TransferFunction: data value -> colour and opacity for the volumes after it in scope, for one
-// tag (or every voxel without its own, tag -1). SCENE-FORMAT.md sections 3-4.
+// tag (or every voxel without its own, tag -1). docs/SCENE-FORMAT.md sections 3-4.
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
 

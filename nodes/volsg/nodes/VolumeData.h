@@ -1,6 +1,6 @@
 #pragma once
 // VolumeData: the voxels (and optional labels) that the Volume and ShearWarpVolume nodes after
-// it in scope render. Read from a file (SCENE-FORMAT.md section 3) or generated (test volumes).
+// it in scope render. Read from a file (docs/SCENE-FORMAT.md section 3) or generated (test volumes).
 #include <string>
 
 #include <volsg/core/Node.h>
