@@ -9,6 +9,9 @@ find_package(ZLIB REQUIRED)
 # TINYGLTF_IMPLEMENTATION anywhere.
 find_package(TinyGLTF REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
+# Texture image files: libsimage is the loader Coin itself uses, so a Texture2 reads exactly
+# the formats an Inventor file may name (SGI .rgb, PNG, JPEG, GIF, TIFF).
+pkg_check_modules(SIMAGE REQUIRED IMPORTED_TARGET simage)
 # Dear ImGui for the viewer's editor panels: Debian ships a static libimgui.a with the GLFW and
 # OpenGL3 backends compiled in and no CMake config.
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)

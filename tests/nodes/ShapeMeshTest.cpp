@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include <volsg/geometry/IndexedMeshes.h>
 #include <volsg/geometry/PrimitiveMeshes.h>
+#include <volsg/geometry/VertexShapes.h>
 #include <volsg/nodes/Cone.h>
 #include <volsg/nodes/Coordinate3.h>
 #include <volsg/nodes/Cube.h>
@@ -308,15 +308,24 @@ TEST_CASE("face set skips polygons with bad indices and keeps the rest") {
         CHECK(empty.positions.empty());
     }
 
-    // Bad normal indices skip the polygon too.
+    // Normals that do not cover every corner (an index beyond them, or normalIndex too short)
+    // are not used: the shape keeps all its polygons and generates its normals, as Coin does
+    // when the normals in scope do not fit the shape.
     auto normals = Normal::create();
-    normals->vector.setValues({{0, 0, 1}});
+    normals->vector.setValues({{1, 0, 0}});
     state.add(*normals);
     faces->coordIndex.setValues({0, 1, 2, -1, 0, 2, 3, -1});
-    faces->normalIndex.setValues({0, 0, 0, -1, 0, 7, 0, -1});
-    CHECK(faces->mesh(state).primitiveCount() == 1);
-    faces->normalIndex.setValues({0, 0, 0}); // too short for the second polygon
-    CHECK(faces->mesh(state).primitiveCount() == 1);
+    for (std::vector<std::int32_t> normalIndex :
+         {std::vector<std::int32_t>{0, 0, 0, -1, 0, 7, 0, -1}, {0, 0, 0}}) {
+        faces->normalIndex.setValues(normalIndex);
+        const Mesh& m = faces->mesh(state);
+        CHECK(m.primitiveCount() == 2);
+        for (const glm::vec3& n : m.normals)
+            CHECK(std::abs(n.z) == doctest::Approx(1.0)); // the square's own, not (1, 0, 0)
+    }
+    faces->normalIndex.setValues({0, 0, 0, -1, 0, 0, 0, -1}); // covering: used as given
+    for (const glm::vec3& n : faces->mesh(state).normals)
+        CHECK(n == glm::vec3(1, 0, 0));
 }
 
 TEST_CASE("face set without coordinates in scope is empty") {
@@ -376,7 +385,9 @@ TEST_CASE("face set Newell normal of a tilted pentagon is the plane normal") {
     }
     Mesh m;
     const std::vector<std::int32_t> index = {0, 1, 2, 3, 4};
-    buildFaceSetMesh(points, index, {}, {}, m);
+    VertexAttributes attributes;
+    attributes.points = points;
+    buildVertexShapeMesh(makeIndexedFaceSetTopology(index, points.size()), attributes, m);
     CHECK(m.primitiveCount() == 3);
     for (const auto& normal : m.normals)
         CHECK(glm::length(d(normal) - n) <= 1e-6);

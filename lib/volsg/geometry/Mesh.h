@@ -1,6 +1,6 @@
 #pragma once
-// Triangles or lines with per-vertex normals: what every shape node turns into, for drawing,
-// bounding boxes and picking alike.
+// Triangles, lines or points with per-vertex attributes: what every shape node turns into, for
+// drawing, bounding boxes and picking alike.
 
 #include <cstdint>
 #include <vector>
@@ -12,12 +12,13 @@
 namespace volsg {
 
 struct Mesh {
-    enum class Primitive { Triangles, Lines };
+    enum class Primitive { Triangles, Lines, Points };
     Primitive primitive = Primitive::Triangles;
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;     ///< one per position (empty for lines)
+    std::vector<glm::vec3> normals;     ///< one per position (empty for lines and points)
     std::vector<glm::vec4> colors;      ///< optional, one per position (overrides diffuse)
-    std::vector<std::uint32_t> indices; ///< 3 per triangle or 2 per line segment
+    std::vector<glm::vec2> texCoords;   ///< optional, one per position
+    std::vector<std::uint32_t> indices; ///< 3 per triangle, 2 per line segment, 1 per point
 
     Box3 bounds() const {
         Box3 b;
@@ -25,8 +26,9 @@ struct Mesh {
             b.extendBy(glm::dvec3(p));
         return b;
     }
-    std::size_t primitiveCount() const {
-        return indices.size() / (primitive == Primitive::Triangles ? 3 : 2);
+    std::size_t primitiveCount() const { return indices.size() / verticesPerPrimitive(); }
+    std::size_t verticesPerPrimitive() const {
+        return primitive == Primitive::Triangles ? 3 : primitive == Primitive::Lines ? 2 : 1;
     }
 };
 

@@ -44,6 +44,11 @@ struct SceneLight {
     glm::vec4 vector{0.0f, 0.0f, 1.0f,
                      0.0f}; ///< position (w = 1) or direction to the light (w = 0)
     glm::vec3 color{1.0f};  ///< intensity * colour
+    /// A spot light (positions only): the direction it points, the cosine of its cut-off
+    /// angle (below -1 for lights without a cone) and the exponent of its fall-off.
+    glm::vec3 spotDirection{0.0f, 0.0f, -1.0f};
+    float spotCosCutOff = -2.0f;
+    float spotExponent = 0.0f;
 };
 
 /// Switches that turn an optimisation off, to measure what it saves (volsg-bench) or to

@@ -14,11 +14,14 @@ void GpuMesh::upload(const Mesh& mesh) {
                         std::to_string(vertexCount) + " positions");
 
     const bool triangles = mesh.primitive == Mesh::Primitive::Triangles;
-    mode = triangles ? GL_TRIANGLES : GL_LINES;
-    const std::size_t perPrimitive = triangles ? 3 : 2;
+    mode = triangles                                  ? GL_TRIANGLES
+           : mesh.primitive == Mesh::Primitive::Lines ? GL_LINES
+                                                      : GL_POINTS;
+    const std::size_t perPrimitive = mesh.verticesPerPrimitive();
     // A trailing partial primitive would be ignored by GL anyway; leave it out explicitly.
     indexCount = GLsizei(mesh.indices.size() - mesh.indices.size() % perPrimitive);
-    hasNormals = triangles && !mesh.normals.empty() && mesh.normals.size() == vertexCount;
+    hasNormals = !mesh.normals.empty() && mesh.normals.size() == vertexCount;
+    hasTexCoords = !mesh.texCoords.empty() && mesh.texCoords.size() == vertexCount;
     hasColors = !mesh.colors.empty() && mesh.colors.size() == vertexCount;
     hasTranslucentColors = hasColors && std::any_of(mesh.colors.begin(), mesh.colors.end(),
                                                     [](const glm::vec4& c) { return c.a < 1.0f; });
@@ -29,6 +32,7 @@ void GpuMesh::upload(const Mesh& mesh) {
         positions = Buffer(GL_ARRAY_BUFFER);
         normals = Buffer(GL_ARRAY_BUFFER);
         colors = Buffer(GL_ARRAY_BUFFER);
+        texCoords = Buffer(GL_ARRAY_BUFFER);
         indices = Buffer(GL_ELEMENT_ARRAY_BUFFER);
     }
     vertexArray.bind();
@@ -45,6 +49,12 @@ void GpuMesh::upload(const Mesh& mesh) {
         vertexArray.setAttribute(kColorAttribute, colors, 4);
     } else {
         vertexArray.disableAttribute(kColorAttribute, glm::vec4(1.0f));
+    }
+    if (hasTexCoords) {
+        texCoords.setData(mesh.texCoords);
+        vertexArray.setAttribute(kTexCoordAttribute, texCoords, 2);
+    } else {
+        vertexArray.disableAttribute(kTexCoordAttribute, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     }
     // The element buffer binding is VAO state: bind it while the VAO is bound.
     vertexArray.setIndexBuffer(indices);

@@ -9,16 +9,22 @@
 namespace volsg {
 
 /// Attribute locations shared with the shape shaders.
-enum MeshAttribute : GLuint { kPositionAttribute = 0, kNormalAttribute = 1, kColorAttribute = 2 };
+enum MeshAttribute : GLuint {
+    kPositionAttribute = 0,
+    kNormalAttribute = 1,
+    kColorAttribute = 2,
+    kTexCoordAttribute = 3,
+};
 
 struct GpuMesh {
     VertexArray vertexArray;
-    Buffer positions, normals, colors, indices;
+    Buffer positions, normals, colors, texCoords, indices;
     GLsizei indexCount = 0;
     GLenum mode = GL_TRIANGLES;
     bool hasNormals = false;           ///< one normal per position
     bool hasColors = false;            ///< one colour per position (replaces the diffuse colour)
     bool hasTranslucentColors = false; ///< some vertex colour has alpha < 1
+    bool hasTexCoords = false;         ///< one texture coordinate per position
     Box3 bounds;                       ///< local coordinates
     bool uploaded = false;
 

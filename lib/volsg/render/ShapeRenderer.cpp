@@ -1,4 +1,5 @@
 #include <volsg/core/Error.h>
+#include <volsg/fields/ImageField.h>
 #include <volsg/gl/Shader.h>
 #include <volsg/render/GpuMesh.h>
 #include <volsg/render/ShapeRenderer.h>
@@ -12,9 +13,6 @@
 namespace volsg {
 
 namespace {
-
-/// Inventor's default SoEnvironment: white ambient light of intensity 0.2.
-constexpr float kAmbientIntensity = 0.2f;
 
 /// The matrix that maps normals: the cofactor matrix of the model's 3x3 part. It is the
 /// inverse transpose times the determinant, so it keeps directions right (the shader
@@ -41,15 +39,17 @@ ShapeRenderer::ShapeRenderer() {
     program_ = Program({&vertex, &fragment}, "shape");
     ++programBuilds_;
     const Program& p = program_;
-    loc_ = {p.uniformLocation("uModel"),          p.uniformLocation("uNormalMatrix"),
-            p.uniformLocation("uViewProjection"), p.uniformLocation("uClipPlanes"),
-            p.uniformLocation("uClipPlaneCount"), p.uniformLocation("uLit"),
-            p.uniformLocation("uHasNormals"),     p.uniformLocation("uHasColors"),
-            p.uniformLocation("uEmissive"),       p.uniformLocation("uAmbient"),
-            p.uniformLocation("uDiffuse"),        p.uniformLocation("uSpecular"),
-            p.uniformLocation("uShininess"),      p.uniformLocation("uAlpha"),
-            p.uniformLocation("uViewer"),         p.uniformLocation("uLightCount"),
-            p.uniformLocation("uLightVector"),    p.uniformLocation("uLightColor")};
+    auto at = [&p](const char* name) { return p.uniformLocation(name); };
+    loc_ = {at("uModel"),         at("uNormalMatrix"), at("uViewProjection"), at("uView"),
+            at("uTextureMatrix"), at("uClipPlanes"),   at("uClipPlaneCount"), at("uLit"),
+            at("uHasNormals"),    at("uHasColors"),    at("uEmissive"),       at("uAmbient"),
+            at("uDiffuse"),       at("uSpecular"),     at("uShininess"),      at("uAlpha"),
+            at("uViewer"),        at("uLightCount"),   at("uLightVector"),    at("uLightColor"),
+            at("uSpot"),          at("uSpotExponent"), at("uAttenuation"),    at("uTextureModel"),
+            at("uSphereMap"),     at("uTexture"),      at("uBlendColor"),     at("uFogType"),
+            at("uFogColor"),      at("uFogVisibility")};
+    p.use();
+    glUniform1i(loc_.texture, 0);
 }
 
 void ShapeRenderer::upload(GpuMesh& gpu, const Mesh& mesh) {
@@ -67,6 +67,8 @@ void ShapeRenderer::beginFrame(const RenderView& view) {
     glUniformMatrix4fv(loc_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
     const glm::vec4 viewer(view.viewer);
     glUniform4fv(loc_.viewer, 1, glm::value_ptr(viewer));
+    const glm::mat4 eye(view.view);
+    glUniformMatrix4fv(loc_.view, 1, GL_FALSE, glm::value_ptr(eye));
 }
 
 void ShapeRenderer::beginPass() {
@@ -82,7 +84,7 @@ void ShapeRenderer::endFrame() {
 }
 
 void ShapeRenderer::submit(const FrameContext& frame, const GpuMesh& gpu, const ShapeLook& look) {
-    if (gpu.indexCount == 0) return;
+    if (gpu.indexCount == 0 || look.style == ShapeLook::Style::Invisible) return;
     const bool transparent = look.material.transparency > 0.0f || gpu.hasTranslucentColors;
     if (frame.pass == RenderPass::Opaque && !transparent) {
         DrawItem item;
@@ -108,16 +110,32 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
     item.normalMatrix = normalMatrixOf(look.model);
     const SurfaceMaterial& m = look.material;
     item.emissive = m.emissive;
-    item.ambient = m.ambient * kAmbientIntensity;
+    item.ambient = m.ambient * look.environment.ambient;
     item.diffuse = m.diffuse;
     item.specular = m.specular;
     item.shininess = m.shininess * 128.0f;
     item.alpha = 1.0f - m.transparency;
-    item.lit = gpu.mode == GL_TRIANGLES;
+    // Lines and points are lit only with normals of their own.
+    item.lit = gpu.mode == GL_TRIANGLES || gpu.hasNormals;
     if (look.baseColorOnly) {
         item.lit = false;
         item.emissive = glm::vec3(0.0f);
     }
+    item.style = look.style;
+    item.lineWidth = look.lineWidth > 0.0f ? look.lineWidth : 1.0f;
+    item.pointSize = look.pointSize > 0.0f ? look.pointSize : 1.0f;
+    item.cull =
+        look.cullBackFaces && gpu.mode == GL_TRIANGLES && look.style == ShapeLook::Style::Filled;
+    // A mirroring model matrix turns the winding around.
+    const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
+    item.frontClockwise = look.clockwise != mirrored;
+    const ShapeTexturing& t = look.texturing;
+    item.texture = t.texture && t.texture->uploaded ? t.texture : nullptr;
+    item.textureModel = item.texture ? int(t.model) : -1;
+    item.blendColor = t.blendColor;
+    item.textureMatrix = t.matrix;
+    item.sphereMap = t.sphereMap;
+    item.environment = look.environment;
 
     if (item.lit) {
         if (look.lights.size() > std::size_t(kMaxLights))
@@ -126,8 +144,11 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
                         " light a shape");
         item.lightCount = int(look.lights.size());
         for (std::size_t i = 0; i < look.lights.size(); ++i) {
-            item.lightVectors[i] = look.lights[i].vector;
-            item.lightColors[i] = look.lights[i].color;
+            const SceneLight& l = look.lights[i];
+            item.lightVectors[i] = l.vector;
+            item.lightColors[i] = l.color;
+            item.spots[i] = glm::vec4(l.spotDirection, l.spotCosCutOff);
+            item.spotExponents[i] = l.spotExponent;
         }
     } else {
         item.lightCount = 0;
@@ -173,14 +194,79 @@ void ShapeRenderer::draw(const DrawItem& item) {
     if (item.lightCount > 0) {
         glUniform4fv(loc_.lightVector, item.lightCount, glm::value_ptr(item.lightVectors[0]));
         glUniform3fv(loc_.lightColor, item.lightCount, glm::value_ptr(item.lightColors[0]));
+        glUniform4fv(loc_.spot, item.lightCount, glm::value_ptr(item.spots[0]));
+        glUniform1fv(loc_.spotExponent, item.lightCount, item.spotExponents.data());
+    }
+    const ShapeEnvironment& env = item.environment;
+    glUniform3fv(loc_.attenuation, 1, glm::value_ptr(env.attenuation));
+    glUniform1i(loc_.fogType, env.fogType);
+    glUniform3fv(loc_.fogColor, 1, glm::value_ptr(env.fogColor));
+    // Fog without a visibility reaches the far plane; its distance is not known here, so the
+    // renderer uses the eye distance to the far plane of the projection.
+    float visibility = env.fogVisibility;
+    if (!(visibility > 0.0f)) {
+        const glm::dmat4& p = view_.projection;
+        const bool orthographic = p[3][3] == 1.0;
+        visibility =
+            orthographic ? float((p[3][2] - 1.0) / p[2][2]) : float(p[3][2] / (p[2][2] + 1.0));
+    }
+    glUniform1f(loc_.fogVisibility, visibility);
+    glUniform1i(loc_.textureModel, item.textureModel);
+    if (item.textureModel >= 0) {
+        item.texture->texture.bind(0);
+        glUniform1i(loc_.sphereMap, item.sphereMap ? 1 : 0);
+        glUniform3fv(loc_.blendColor, 1, glm::value_ptr(item.blendColor));
+        glUniformMatrix4fv(loc_.textureMatrix, 1, GL_FALSE, glm::value_ptr(item.textureMatrix));
     }
     glUniform1i(loc_.clipPlaneCount, item.clipPlaneCount);
     if (item.clipPlaneCount > 0)
         glUniform4fv(loc_.clipPlanes, item.clipPlaneCount, glm::value_ptr(item.clipPlanes[0]));
     setClipDistances(item.clipPlaneCount);
+
+    // Draw style and culling are restored after the draw: the passes run with filled polygons,
+    // one-pixel lines and no culling.
+    const bool lines = item.style == ShapeLook::Style::Lines;
+    const bool points = item.style == ShapeLook::Style::Points || gpu.mode == GL_POINTS;
+    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled)
+        glPolygonMode(GL_FRONT_AND_BACK, lines ? GL_LINE : GL_POINT);
+    if (item.lineWidth != 1.0f) glLineWidth(item.lineWidth);
+    if (points && item.pointSize != 1.0f) glPointSize(item.pointSize);
+    if (item.cull) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(item.frontClockwise ? GL_CW : GL_CCW);
+    }
     gpu.vertexArray.bind();
     glDrawElements(gpu.mode, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+    if (item.cull) {
+        glDisable(GL_CULL_FACE);
+        glFrontFace(GL_CCW);
+    }
+    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled)
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    if (item.lineWidth != 1.0f) glLineWidth(1.0f);
+    if (points && item.pointSize != 1.0f) glPointSize(1.0f);
     ++drawsLastFrame_;
+}
+
+void ShapeTexture::upload(const InlineImage& image, bool repeatS, bool repeatT) {
+    if (!texture) texture = Texture(GL_TEXTURE_2D);
+    static constexpr GLenum formats[4] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    static constexpr GLenum internal[4] = {GL_R8, GL_RG8, GL_RGB8, GL_RGBA8};
+    const int c = std::clamp(image.components, 1, 4);
+    texture.image2D(internal[c - 1], image.size.x, image.size.y, formats[c - 1], GL_UNSIGNED_BYTE,
+                    image.bytes.data());
+    // Grey (and grey + alpha) images act as luminance textures, as in Inventor.
+    const GLint swizzle[4][4] = {{GL_RED, GL_RED, GL_RED, GL_ONE},
+                                 {GL_RED, GL_RED, GL_RED, GL_GREEN},
+                                 {GL_RED, GL_GREEN, GL_BLUE, GL_ONE},
+                                 {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA}};
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle[c - 1]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, repeatS ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, repeatT ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    texture.setFilter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    uploaded = true;
 }
 
 void ShapeRenderer::drawQueuedTransparent() {

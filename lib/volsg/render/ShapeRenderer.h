@@ -1,5 +1,6 @@
 #pragma once
-// Draws shapes' meshes with Inventor's Phong lighting, clip planes and transparency.
+// Draws shapes' meshes with Inventor's Phong lighting, textures, draw styles, clip planes,
+// environment and transparency.
 
 #include <array>
 #include <cstdint>
@@ -10,11 +11,13 @@
 #include <glm/glm.hpp>
 
 #include <volsg/gl/Program.h>
+#include <volsg/gl/Texture.h>
 #include <volsg/render/FrameContext.h>
 
 namespace volsg {
 
 struct GpuMesh;
+struct InlineImage;
 struct Mesh;
 
 /// Inventor's SoMaterial values for one shape (its defaults without a Material in scope).
@@ -24,25 +27,62 @@ struct SurfaceMaterial {
     float transparency = 0.0f; ///< 0..1
 };
 
+/// A texture image on the GPU (per Texture2 node and version, in the RenderCache).
+struct ShapeTexture {
+    Texture texture;
+    bool uploaded = false;
+    /// Uploads the texels (1 to 4 components; grey becomes (L, L, L, 1), grey-alpha
+    /// (L, L, L, A)) with mipmaps and the wrap modes (true: repeat, false: clamp).
+    void upload(const InlineImage& image, bool repeatS, bool repeatT);
+};
+
+/// How a shape's texture applies (Inventor's SoTexture2 models), with its coordinates.
+struct ShapeTexturing {
+    enum class Model { Modulate, Decal, Blend, Replace };
+    const ShapeTexture* texture = nullptr; ///< null: untextured
+    Model model = Model::Modulate;
+    glm::vec3 blendColor{0.0f};
+    glm::mat4 matrix{1.0f}; ///< the Texture2Transforms in scope
+    bool sphereMap = false; ///< TextureCoordinateEnvironment
+};
+
+/// Inventor's SoEnvironment: ambient light, point-light attenuation, fog.
+struct ShapeEnvironment {
+    glm::vec3 ambient{0.2f};                 ///< ambientIntensity * ambientColor
+    glm::vec3 attenuation{0.0f, 0.0f, 1.0f}; ///< squared, linear, constant
+    int fogType = 0;                         ///< 0 none, 1 haze, 2 fog, 3 smoke
+    glm::vec3 fogColor{1.0f};
+    float fogVisibility = 0.0f; ///< 0: the far plane
+};
+
 /// What a shape looks like where it is drawn, gathered by the traversal from the state.
 struct ShapeLook {
+    enum class Style { Filled, Lines, Points, Invisible }; ///< SoDrawStyle
     glm::dmat4 model{1.0};
     SurfaceMaterial material;
     /// Inventor's LightModel BASE_COLOR: unlit, the diffuse (or vertex) colour alone.
     bool baseColorOnly = false;
+    Style style = Style::Filled;
+    float lineWidth = 1.0f, pointSize = 1.0f; ///< pixels
+    /// SoShapeHints with a known vertex ordering and SOLID: back faces are not drawn.
+    bool cullBackFaces = false;
+    bool clockwise = false; ///< the front faces wind clockwise (SoShapeHints CLOCKWISE)
+    ShapeTexturing texturing;
+    ShapeEnvironment environment;
     std::span<const SceneLight> lights;     ///< in scope (with the headlight), world
     std::span<const glm::dvec4> clipPlanes; ///< world (a, b, c, d) keeping ax+by+cz >= d
 };
 
 /// One per Renderer (so per GL context): the shape program and the queue of transparent
 /// shapes. Shading (linear values, no gamma), per fragment:
-///   colour = emissive + 0.2 * ambient
-///          + sum over lights of intensity * colour * (diffuse * max(N.L, 0)
+///   colour = emissive + ambient * environment ambient
+///          + sum over lights of strength * intensity * colour * (diffuse * max(N.L, 0)
 ///                                                    + specular * max(N.H, 0)^(shininess*128))
 ///   alpha  = 1 - transparency
-/// with the first value of each field of the nearest Material (Inventor's defaults without
-/// one), vertex colours in place of the diffuse colour, N flipped towards the viewer, and H
-/// the half vector to the viewer. Lines are unlit: emissive + diffuse.
+/// then the texture by its model, then fog; strength is 1 for directional lights, the
+/// environment's attenuation and the cone for point and spot lights. Vertex colours replace
+/// the diffuse colour, N is flipped towards the viewer, and H is the half vector to the
+/// viewer. Lines and points without normals are unlit: emissive + diffuse.
 class ShapeRenderer {
 public:
     static constexpr int kMaxLights = 8;
@@ -59,8 +99,8 @@ public:
     /// Puts `mesh` on the GPU into `gpu` (counted in meshUploads()).
     void upload(GpuMesh& gpu, const Mesh& mesh);
     /// Draws `gpu` as `look` says: at once if it is opaque and this is the Opaque pass; queued
-    /// if it is transparent and this is the Transparent pass; not at all otherwise. Throws
-    /// Error for more clip planes or lights than it can draw.
+    /// if it is transparent and this is the Transparent pass; not at all otherwise (nor when
+    /// its style is INVISIBLE). Throws Error for more clip planes or lights than it can draw.
     void submit(const FrameContext& frame, const GpuMesh& gpu, const ShapeLook& look);
 
     /// Queues a draw that is not a shape's mesh (a glTF BLEND primitive) with the transparent
@@ -97,18 +137,30 @@ private:
         glm::vec3 emissive{0.0f}, ambient{0.0f}, diffuse{0.8f}, specular{0.0f};
         float shininess = 0.0f, alpha = 1.0f;
         bool lit = true;
+        ShapeLook::Style style = ShapeLook::Style::Filled;
+        float lineWidth = 1.0f, pointSize = 1.0f;
+        bool cull = false, frontClockwise = false;
+        int textureModel = -1; ///< -1: none
+        const ShapeTexture* texture = nullptr;
+        glm::vec3 blendColor{0.0f};
+        glm::mat4 textureMatrix{1.0f};
+        bool sphereMap = false;
+        ShapeEnvironment environment;
         int lightCount = 0;
         std::array<glm::vec4, kMaxLights> lightVectors{};
         std::array<glm::vec3, kMaxLights> lightColors{};
+        std::array<glm::vec4, kMaxLights> spots{};
+        std::array<float, kMaxLights> spotExponents{};
         int clipPlaneCount = 0;
         std::array<glm::vec4, kMaxClipPlanes> clipPlanes{};
         double eyeDepth = 0.0; ///< eye-space z of the bounds' centre (more negative = farther)
         std::function<void()> external; ///< set: a queueTransparent() draw, not a mesh
     };
     struct Locations {
-        GLint model, normalMatrix, viewProjection, clipPlanes, clipPlaneCount, lit, hasNormals,
-            hasColors, emissive, ambient, diffuse, specular, shininess, alpha, viewer, lightCount,
-            lightVector, lightColor;
+        GLint model, normalMatrix, viewProjection, view, textureMatrix, clipPlanes, clipPlaneCount,
+            lit, hasNormals, hasColors, emissive, ambient, diffuse, specular, shininess, alpha,
+            viewer, lightCount, lightVector, lightColor, spot, spotExponent, attenuation,
+            textureModel, sphereMap, texture, blendColor, fogType, fogColor, fogVisibility;
     };
 
     void fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& item);

@@ -1,5 +1,6 @@
 #pragma once
-// GLSL of the shape program: Inventor's fixed-function Phong model, per fragment.
+// GLSL of the shape program: Inventor's fixed-function Phong model, per fragment, with its
+// texture models, spot lights, environment (ambient light, attenuation, fog).
 // Compiled with "#version 330 core" and the MAX_LIGHTS / MAX_CLIP_PLANES defines in front.
 
 namespace volsg::shaders {
@@ -8,16 +9,21 @@ inline constexpr const char* shapeVertex = R"GLSL(
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec4 aColor;
+layout(location = 3) in vec2 aTexCoord;
 
 uniform mat4 uModel;
 uniform mat3 uNormalMatrix;
 uniform mat4 uViewProjection;
+uniform mat4 uView;
+uniform mat4 uTextureMatrix;
 uniform vec4 uClipPlanes[MAX_CLIP_PLANES]; // world (n, d): keep dot(n, p) >= d
 uniform int uClipPlaneCount;
 
 out vec3 vWorldPosition;
 out vec3 vWorldNormal;
 out vec4 vColor;
+out vec2 vTexCoord;
+out float vEyeDistance;
 out float gl_ClipDistance[MAX_CLIP_PLANES];
 
 void main() {
@@ -25,6 +31,8 @@ void main() {
     vWorldPosition = world.xyz;
     vWorldNormal = uNormalMatrix * aNormal;
     vColor = aColor;
+    vTexCoord = (uTextureMatrix * vec4(aTexCoord, 0.0, 1.0)).xy;
+    vEyeDistance = -(uView * world).z;
     for (int i = 0; i < MAX_CLIP_PLANES; ++i)
         gl_ClipDistance[i] =
             i < uClipPlaneCount ? dot(uClipPlanes[i].xyz, world.xyz) - uClipPlanes[i].w : 1.0;
@@ -36,30 +44,69 @@ inline constexpr const char* shapeFragment = R"GLSL(
 in vec3 vWorldPosition;
 in vec3 vWorldNormal;
 in vec4 vColor;
+in vec2 vTexCoord;
+in float vEyeDistance;
 
-uniform bool uLit;        // false for lines: emissive + diffuse
+uniform bool uLit;        // false for lines and points without normals: emissive + diffuse
 uniform bool uHasNormals; // else flat normals from the screen-space derivatives
 uniform bool uHasColors;  // vertex colours replace the diffuse colour
 uniform vec3 uEmissive;
-uniform vec3 uAmbient;    // material ambient times the environment's 0.2
+uniform vec3 uAmbient;    // material ambient times the environment's ambient light
 uniform vec3 uDiffuse;
 uniform vec3 uSpecular;
 uniform float uShininess; // the exponent: Inventor's shininess * 128
 uniform float uAlpha;     // 1 - transparency
 uniform vec4 uViewer;     // eye position (w = 1) or direction towards the viewer (w = 0)
+uniform mat4 uView;
 uniform int uLightCount;
 uniform vec4 uLightVector[MAX_LIGHTS]; // position (w = 1) or direction towards the light (w = 0)
 uniform vec3 uLightColor[MAX_LIGHTS];  // intensity * colour
+uniform vec4 uSpot[MAX_LIGHTS];        // direction the spot points (xyz), cos of cut-off (w)
+uniform float uSpotExponent[MAX_LIGHTS];
+uniform vec3 uAttenuation;             // squared, linear, constant (SoEnvironment)
+// Texture: -1 none, 0 MODULATE, 1 DECAL, 2 BLEND, 3 REPLACE.
+uniform int uTextureModel;
+uniform bool uSphereMap; // TextureCoordinateEnvironment: coordinates from the reflection
+uniform sampler2D uTexture;
+uniform vec3 uBlendColor;
+// Fog: 0 none, 1 HAZE, 2 FOG, 3 SMOKE.
+uniform int uFogType;
+uniform vec3 uFogColor;
+uniform float uFogVisibility;
 
 out vec4 fragColor;
+
+vec4 textured(vec4 lit, vec3 N) {
+    if (uTextureModel < 0) return lit;
+    vec2 st = vTexCoord;
+    if (uSphereMap) {
+        vec3 u = normalize((uView * vec4(vWorldPosition, 1.0)).xyz);
+        vec3 n = normalize(mat3(uView) * N);
+        vec3 r = reflect(u, n);
+        float m = 2.0 * sqrt(r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0));
+        st = m > 0.0 ? r.xy / m + 0.5 : vec2(0.5);
+    }
+    vec4 t = texture(uTexture, st);
+    if (uTextureModel == 0) return lit * t;
+    if (uTextureModel == 1) return vec4(mix(lit.rgb, t.rgb, t.a), lit.a);
+    if (uTextureModel == 2) return vec4(mix(lit.rgb, uBlendColor, t.rgb), lit.a * t.a);
+    return t;
+}
+
+vec3 fogged(vec3 color) {
+    if (uFogType == 0) return color;
+    float v = uFogVisibility;
+    float d = max(vEyeDistance, 0.0);
+    float f; // how much of the colour remains
+    if (uFogType == 1) f = v > 0.0 ? clamp(1.0 - d / v, 0.0, 1.0) : 1.0;
+    else if (uFogType == 2) f = v > 0.0 ? exp(-4.0 * d / v) : 1.0;
+    else f = v > 0.0 ? exp(-(2.0 * d / v) * (2.0 * d / v)) : 1.0;
+    return mix(uFogColor, color, f);
+}
 
 void main() {
     vec3 diffuse = uHasColors ? vColor.rgb : uDiffuse;
     float alpha = uAlpha * (uHasColors ? vColor.a : 1.0);
-    if (!uLit) {
-        fragColor = vec4(uEmissive + diffuse, alpha);
-        return;
-    }
     vec3 V = normalize(uViewer.xyz - vWorldPosition * uViewer.w);
     vec3 N = uHasNormals ? vWorldNormal : vec3(0.0);
     if (dot(N, N) <= 0.0) N = cross(dFdx(vWorldPosition), dFdy(vWorldPosition));
@@ -67,17 +114,33 @@ void main() {
     // Two-sided lighting: the side facing the viewer is lit, so open or inverted meshes are
     // not black inside.
     if (dot(N, V) < 0.0) N = -N;
+    if (!uLit) {
+        vec4 unlit = textured(vec4(uEmissive + diffuse, alpha), N);
+        fragColor = vec4(fogged(unlit.rgb), unlit.a);
+        return;
+    }
 
     vec3 color = uEmissive + uAmbient;
     for (int i = 0; i < uLightCount; ++i) {
-        vec3 L = normalize(uLightVector[i].xyz - vWorldPosition * uLightVector[i].w);
+        vec3 toLight = uLightVector[i].xyz - vWorldPosition * uLightVector[i].w;
+        vec3 L = normalize(toLight);
         float NdotL = dot(N, L);
         if (NdotL <= 0.0) continue; // no diffuse and, as in OpenGL, no specular
+        float strength = 1.0;
+        if (uLightVector[i].w != 0.0) {
+            float d = length(toLight);
+            float a = uAttenuation.z + uAttenuation.y * d + uAttenuation.x * d * d;
+            strength = a > 0.0 ? 1.0 / a : 1.0;
+            float spotCos = dot(-L, uSpot[i].xyz);
+            if (spotCos < uSpot[i].w) continue; // outside the cone
+            if (uSpotExponent[i] > 0.0) strength *= pow(max(spotCos, 0.0), uSpotExponent[i]);
+        }
         float NdotH = max(dot(N, normalize(L + V)), 0.0);
         float specular = NdotH > 0.0 ? pow(NdotH, uShininess) : (uShininess == 0.0 ? 1.0 : 0.0);
-        color += uLightColor[i] * (diffuse * NdotL + uSpecular * specular);
+        color += strength * uLightColor[i] * (diffuse * NdotL + uSpecular * specular);
     }
-    fragColor = vec4(color, alpha);
+    vec4 lit = textured(vec4(color, alpha), N);
+    fragColor = vec4(fogged(lit.rgb), lit.a);
 }
 )GLSL";
 

@@ -3,31 +3,51 @@
 
 #include <mutex>
 
+#include <volsg/nodes/BaseColor.h>
+#include <volsg/nodes/Bindings.h>
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/Complexity.h>
 #include <volsg/nodes/Cone.h>
 #include <volsg/nodes/Coordinate3.h>
+#include <volsg/nodes/Coordinate4.h>
 #include <volsg/nodes/Cube.h>
 #include <volsg/nodes/Cylinder.h>
+#include <volsg/nodes/DrawStyle.h>
+#include <volsg/nodes/Environment.h>
+#include <volsg/nodes/FaceSet.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/Group.h>
 #include <volsg/nodes/IndexedFaceSet.h>
 #include <volsg/nodes/IndexedLineSet.h>
+#include <volsg/nodes/IndexedTriangleStripSet.h>
 #include <volsg/nodes/Light.h>
 #include <volsg/nodes/LightModel.h>
+#include <volsg/nodes/LineSet.h>
 #include <volsg/nodes/Material.h>
 #include <volsg/nodes/MatrixTransform.h>
 #include <volsg/nodes/Normal.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
+#include <volsg/nodes/PointSet.h>
+#include <volsg/nodes/QuadMesh.h>
 #include <volsg/nodes/ResetTransform.h>
 #include <volsg/nodes/Separator.h>
+#include <volsg/nodes/ShapeHints.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Switch.h>
+#include <volsg/nodes/Texture2.h>
+#include <volsg/nodes/Texture2Transform.h>
+#include <volsg/nodes/TextureCoordinate2.h>
+#include <volsg/nodes/TextureCoordinateDefault.h>
+#include <volsg/nodes/TextureCoordinateEnvironment.h>
+#include <volsg/nodes/TextureCoordinatePlane.h>
 #include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/Transform.h>
+#include <volsg/nodes/TriangleStripSet.h>
+#include <volsg/nodes/VertexProperty.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeObject.h>
@@ -69,6 +89,30 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(ResetTransform::classType());
     r.add(OrthoSlice::classType());
     r.add(ObliqueSlice::classType());
+    // Inventor 2.1: appearance, vertex data and vertex shapes.
+    r.add(BaseColor::classType());
+    r.add(MaterialBinding::classType());
+    r.add(NormalBinding::classType());
+    r.add(TextureCoordinateBinding::classType());
+    r.add(Coordinate4::classType());
+    r.add(VertexProperty::classType());
+    r.add(ShapeHints::classType());
+    r.add(DrawStyle::classType());
+    r.add(Complexity::classType());
+    r.add(Environment::classType());
+    r.add(SpotLight::classType());
+    r.add(Texture2::classType());
+    r.add(Texture2Transform::classType());
+    r.add(TextureCoordinate2::classType());
+    r.add(TextureCoordinatePlane::classType());
+    r.add(TextureCoordinateEnvironment::classType());
+    r.add(TextureCoordinateDefault::classType());
+    r.add(FaceSet::classType());
+    r.add(TriangleStripSet::classType());
+    r.add(IndexedTriangleStripSet::classType());
+    r.add(QuadMesh::classType());
+    r.add(LineSet::classType());
+    r.add(PointSet::classType());
 }
 
 } // namespace

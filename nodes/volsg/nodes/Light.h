@@ -40,4 +40,19 @@ protected:
     ~PointLight() override = default;
 };
 
+/// Light from a point into a cone (Inventor's SoSpotLight): full inside cutOffAngle of the
+/// direction, none outside; within the cone, intensity times cos(angle)^(dropOffRate * 128).
+class SpotLight : public Inherit<Light, SpotLight> {
+public:
+    static constexpr const char* typeName = "SpotLight";
+    static constexpr bool inventorBuiltin() { return true; }
+    SFVec3f location{this, "location", glm::vec3(0.0f, 0.0f, 1.0f)};
+    SFVec3f direction{this, "direction", glm::vec3(0.0f, 0.0f, -1.0f)};
+    SFFloat dropOffRate{this, "dropOffRate", 0.0f};
+    SFFloat cutOffAngle{this, "cutOffAngle", 0.785398163f}; ///< radians
+
+protected:
+    ~SpotLight() override = default;
+};
+
 } // namespace volsg

@@ -1,5 +1,7 @@
 // Everything shapes share: the mesh, built from the fields and state, cached by its key.
+#include <volsg/geometry/MeshKey.h>
 #include <volsg/nodes/Shape.h>
+#include <volsg/nodes/ShapeState.h>
 
 namespace volsg {
 
@@ -14,8 +16,8 @@ const Mesh& Shape::mesh(const State& state) const {
     return mesh_;
 }
 
-std::uint64_t Shape::meshKey(const State&) const {
-    return version();
+std::uint64_t Shape::meshKey(const State& state) const {
+    return combineMeshKey(version(), gatherShapeState(state, nullptr).meshKey());
 }
 
 } // namespace volsg

@@ -3,6 +3,9 @@
 #include <volsg/render/BuiltinRendering.h>
 #include <volsg/render/RenderAction.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace volsg {
 
 ActionMethods& RenderAction::methods() {
@@ -22,8 +25,7 @@ void RenderAction::lightsInScope(std::vector<SceneLight>& out) const {
     out.clear();
     if (frame_.view.headlight) {
         // Along the view direction: towards the light is towards the viewer.
-        const glm::dvec3 back =
-            glm::dvec3(glm::inverse(frame_.view.view) * glm::dvec4(0, 0, 1, 0));
+        const glm::dvec3 back = glm::dvec3(glm::inverse(frame_.view.view) * glm::dvec4(0, 0, 1, 0));
         out.push_back({glm::vec4(glm::vec3(glm::normalize(back)), 0.0f), glm::vec3(1.0f)});
     }
     // Walks the entries directly: State::all() would allocate for every shape.
@@ -41,6 +43,18 @@ void RenderAction::lightsInScope(std::vector<SceneLight>& out) const {
             const auto& p = static_cast<const PointLight&>(light);
             const glm::dvec3 w = glm::dvec3(e->model * glm::dvec4(glm::dvec3(p.location()), 1.0));
             out.push_back({glm::vec4(glm::vec3(w), 1.0f), color});
+        } else if (e->node->isA<SpotLight>()) {
+            const auto& s = static_cast<const SpotLight&>(light);
+            const glm::dvec3 w = glm::dvec3(e->model * glm::dvec4(glm::dvec3(s.location()), 1.0));
+            const glm::dvec3 d = glm::dvec3(e->model * glm::dvec4(glm::dvec3(s.direction()), 0.0));
+            if (!(glm::length(d) > 0.0)) continue; // a zero direction lights nothing
+            SceneLight spot{glm::vec4(glm::vec3(w), 1.0f), color};
+            spot.spotDirection = glm::vec3(glm::normalize(d));
+            // Inventor's cut-off is the half angle of the cone; above pi/2 it lights all around.
+            const double cutOff = std::clamp(double(s.cutOffAngle()), 0.0, 3.14159265358979);
+            spot.spotCosCutOff = cutOff >= 3.14159265358979 / 2.0 ? -2.0f : float(std::cos(cutOff));
+            spot.spotExponent = std::clamp(s.dropOffRate(), 0.0f, 1.0f) * 128.0f;
+            out.push_back(spot);
         }
     }
 }

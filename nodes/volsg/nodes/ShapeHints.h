@@ -1,0 +1,34 @@
+#pragma once
+// ShapeHints: what the shapes after it are like (Inventor's SoShapeHints): the vertex order of
+// their faces, whether they are closed solids, whether their faces are convex, and the crease
+// angle below which generated normals are smoothed across faces.
+//
+// Drawing follows Inventor's rules: ordered and SOLID: back faces are culled; otherwise both
+// sides are drawn and lit (volsg lights both sides whatever the ordering: unknown ordering is
+// exactly when a normal may face away from the viewer).
+#include <volsg/core/Node.h>
+#include <volsg/fields/Fields.h>
+
+namespace volsg {
+
+class ShapeHints : public Inherit<Node, ShapeHints> {
+public:
+    static constexpr const char* typeName = "ShapeHints";
+    static constexpr bool inventorBuiltin() { return true; }
+    enum VertexOrdering { UNKNOWN_ORDERING, CLOCKWISE, COUNTERCLOCKWISE };
+    enum ShapeType { UNKNOWN_SHAPE_TYPE, SOLID };
+    enum FaceType { UNKNOWN_FACE_TYPE, CONVEX };
+    static const EnumValues vertexOrderingNames, shapeTypeNames, faceTypeNames;
+
+    SFEnum vertexOrdering{this, "vertexOrdering", vertexOrderingNames, UNKNOWN_ORDERING};
+    SFEnum shapeType{this, "shapeType", shapeTypeNames, UNKNOWN_SHAPE_TYPE};
+    SFEnum faceType{this, "faceType", faceTypeNames, CONVEX};
+    SFFloat creaseAngle{this, "creaseAngle", 0.0f}; ///< radians
+
+    void doAction(Action& action) override;
+
+protected:
+    ~ShapeHints() override = default;
+};
+
+} // namespace volsg
