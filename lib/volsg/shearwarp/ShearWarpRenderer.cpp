@@ -136,7 +136,7 @@ BandJob bandJob(const Factorisation& f, const std::vector<FrameObject>& objects,
     job.anySurface = paths.anySurface;
     job.hasLimit = paths.hasLimit;
     job.inter = view.interObject;
-    job.simd = bestSimdLevel();
+    job.simd = view.simd;
     job.opaqueWindowDepth = paths.hasLimit ? view.opaqueWindowDepth.data() : nullptr;
     job.buffers = buffers;
     job.bandCount =
