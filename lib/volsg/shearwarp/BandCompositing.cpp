@@ -133,7 +133,7 @@ bool entryRows(const RowTarget& t, const RenderListEntry& e, EntryRows& rows) {
     rows.rowBase = int(e.offset.y) + t.slice->iv0 - t.band->r0;
     rows.colBase = int(e.offset.x) + t.slice->iu0;
     // Data is clamped to the edge up to the box face, half a voxel out, and nothing lies beyond
-    // (SCENE-FORMAT section 4): the pixel on a face voxel's outer side takes its full value
+    // (docs/SCENE-FORMAT.md section 4): the pixel on a face voxel's outer side takes its full value
     // inside the face, none outside.
     rows.edgeA0 = e.offset.x == 0 ? 0u : 256u;
     rows.edgeB0 = e.offset.y == 0 ? 0u : 256u;

@@ -91,8 +91,8 @@ void warpFrame(WorkerPool& pool, const Factorisation& f, const FrameBuffers& buf
         box = glm::ivec4(glm::min(glm::ivec2(box), glm::ivec2(b)),
                          glm::max(glm::ivec2(box.z, box.w), glm::ivec2(b.z, b.w)));
     // Between the outermost voxel centres and the box faces the data is clamped to the edge
-    // (SCENE-FORMAT section 4). Along an unsheared intermediate axis the rays are parallel to
-    // the box's side faces: a ray within half a voxel outside the outermost voxel column sees
+    // (docs/SCENE-FORMAT.md section 4). Along an unsheared intermediate axis the rays are parallel
+    // to the box's side faces: a ray within half a voxel outside the outermost voxel column sees
     // that column's values all along, so the warp clamps to it (exact). Along a sheared axis the
     // silhouette is slanted and clamping would smear it; there the warp blends towards empty
     // pixels (an error confined to the half-voxel border, measured in README.md).
