@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <set>
 #include <tuple>
 
@@ -268,6 +269,34 @@ TEST_CASE("threads give the same image as one thread") {
     const ShearWarpFrame two = renderer.render(objects, view);
     CHECK(one.image.pixels == two.image.pixels);
     CHECK(one.stats.voxelsTouched > 0u);
+}
+
+TEST_CASE("every SIMD level renders the same frame bit for bit") {
+    // The view's setting picks the kernels' vector instructions; the default is the widest the
+    // CPU runs, and a level it does not run is taken as Scalar.
+    CHECK(ShearWarpView{}.simd == bestSimdLevel());
+    auto grid = makeMarschnerLobb(32);
+    TransferFunction1D opaque = smoothColourRamp();
+    opaque.setChannel(TransferFunction1D::Alpha, {{0.0, 0.0}, {0.4, 0.9}, {1.0, 1.0}});
+    for (const TransferFunction1D& tf : {smoothColourRamp(), opaque}) {
+        std::vector<ShearWarpObject> objects{objectOf(*grid, tf)};
+        ShearWarpRenderer renderer;
+        ShearWarpView view = orthoView(64, 1.8, 0.5, 0.3);
+        view.simd = SimdLevel::Scalar;
+        const ShearWarpFrame scalar = renderer.render(objects, view);
+        view.simd = SimdLevel::Avx2;
+        const ShearWarpFrame avx2 = renderer.render(objects, view);
+        CHECK(scalar.stats.fastPath); // pure DVR: the row composite has an AVX2 kernel
+        CHECK(scalar.stats.voxelsTouched > 0u);
+        REQUIRE(scalar.image.pixels.size() == avx2.image.pixels.size());
+        CHECK(std::memcmp(scalar.image.pixels.data(), avx2.image.pixels.data(),
+                          scalar.image.pixels.size() * sizeof(glm::vec4)) == 0);
+        CHECK(scalar.pickObject == avx2.pickObject);
+        REQUIRE(scalar.pickSlice.size() == avx2.pickSlice.size());
+        CHECK(std::memcmp(scalar.pickSlice.data(), avx2.pickSlice.data(),
+                          scalar.pickSlice.size() * sizeof(float)) == 0);
+        CHECK(scalar.stats.voxelsHidden == avx2.stats.voxelsHidden);
+    }
 }
 
 TEST_CASE("plain transfer-function DVR and MIP converge to the reference") {

@@ -14,6 +14,29 @@
 
 namespace volsg {
 
+namespace shearwarp {
+
+/// The scratch of one band-compositing thread (internal to the renderer).
+struct BandScratch {
+    std::vector<glm::vec4> lines[2]; ///< one voxel row resampled along a, and the previous
+    std::uint64_t voxels = 0, hidden = 0;
+    std::uint64_t entries = 0;
+};
+
+/// The renderer's buffers kept from frame to frame (internal; sized per frame, never shrunk).
+struct FrameScratch {
+    std::vector<glm::vec4> global, local;
+    std::vector<float> localValue, localDepth, limit, hitDepth;
+    std::vector<std::int16_t> localObject;
+    std::vector<std::int32_t> nextOpen; ///< per pixel: itself, or a later column once opaque
+    std::vector<int> opaqueCount;       ///< per intermediate row: stopped pixels
+    std::vector<BandScratch> bands;
+    /// Pure MIP: per thread, the largest value + 1 (0: none) and its slice per pixel.
+    std::vector<std::vector<std::uint16_t>> mipValue, mipSlice;
+};
+
+} // namespace shearwarp
+
 /// The result of a frame: the premultiplied image (rgb = colour * coverage, a = 1 - total
 /// transmittance; composite it over what lies behind), the window depth of opaque results
 /// (Surface hits of objects with opacity 1; 1 elsewhere), and what picking needs.
@@ -94,19 +117,7 @@ public:
 private:
     ShearWarpFrame renderFrame(std::vector<ShearWarpObject>& objects, const ShearWarpView& view);
 
-    struct BandScratch {
-        std::vector<glm::vec4> lines[2]; ///< one voxel row resampled along a, and the previous
-        std::uint64_t voxels = 0, hidden = 0;
-        std::uint64_t entries = 0;
-    };
-    std::vector<glm::vec4> global_, local_;
-    std::vector<float> localValue_, localDepth_, limit_, hitDepth_;
-    std::vector<std::int16_t> localObject_;
-    std::vector<std::int32_t> nextOpen_; ///< per pixel: itself, or a later column once opaque
-    std::vector<int> opaqueCount_;       ///< per intermediate row: stopped pixels
-    std::vector<BandScratch> bands_;
-    /// Pure MIP: per thread, the largest value + 1 (0: none) and its slice per pixel.
-    std::vector<std::vector<std::uint16_t>> mipValue_, mipSlice_;
+    shearwarp::FrameScratch scratch_;                                   ///< kept between frames
     ShearWarpFrame spare_;                                              ///< recycled buffers
     std::unique_ptr<WorkerPool> pool_ = std::make_unique<WorkerPool>(); ///< the frame's threads
 };

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <volsg/core/Object.h>
+#include <volsg/shearwarp/SimdLevel.h>
 #include <volsg/shearwarp/VoxelObject.h>
 #include <volsg/volume/TransferFunction1D.h>
 
@@ -78,6 +79,11 @@ struct ShearWarpView {
     /// Pure MIP scenes take the value-sorted path (ShearWarpRenderer); false: the general
     /// two-buffer path with bilinear slices (comparisons, benchmarks).
     bool valueSortedMip = true;
+    /// The vector instructions of the engine's kernels (SimdLevel.h). Every level gives the
+    /// same image bit for bit, so this changes speed only: Scalar compares the kernels or
+    /// measures without AVX2. A level this CPU does not run is taken as Scalar. Default: the
+    /// widest level this CPU runs.
+    SimdLevel simd = bestSimdLevel();
 };
 
 /// What a frame did.

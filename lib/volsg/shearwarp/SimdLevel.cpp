@@ -1,8 +1,5 @@
 #include <volsg/shearwarp/SimdLevel.h>
 
-#include <cstdlib>
-#include <cstring>
-
 namespace volsg {
 
 bool simdLevelAvailable(SimdLevel level) {
@@ -19,12 +16,7 @@ bool simdLevelAvailable(SimdLevel level) {
 }
 
 SimdLevel bestSimdLevel() {
-    static const SimdLevel level = [] {
-        const char* off = std::getenv("VOLSG_NO_AVX2");
-        if (off && std::strcmp(off, "1") == 0) return SimdLevel::Scalar;
-        return simdLevelAvailable(SimdLevel::Avx2) ? SimdLevel::Avx2 : SimdLevel::Scalar;
-    }();
-    return level;
+    return simdLevelAvailable(SimdLevel::Avx2) ? SimdLevel::Avx2 : SimdLevel::Scalar;
 }
 
 } // namespace volsg
