@@ -215,6 +215,8 @@ TEST_CASE("rows survive the trip between processes, messages made one line") {
     row.readOk = false;
     row.readError = "king.iv:1:1: binary\tfiles\nare not read";
     row.coinRendered = row.volsgRendered = row.compared = true;
+    row.renderError = "x.framed.iv:20:5: unknown node type 'Info'";
+    row.missingTypes = "Info ShapeHints";
     row.comparison.pixelsA = 1000;
     row.comparison.pixelsB = 900;
     row.comparison.intersection = 850;
@@ -232,6 +234,8 @@ TEST_CASE("rows survive the trip between processes, messages made one line") {
     CHECK(back.header == row.header);
     CHECK(back.readOk == row.readOk);
     CHECK(back.readError == "king.iv:1:1: binary files are not read");
+    CHECK(back.renderError == row.renderError);
+    CHECK(back.missingTypes == row.missingTypes);
     CHECK(back.compared);
     CHECK(back.comparison.intersection == 850);
     CHECK(back.comparison.unionCount == 1050);
@@ -343,4 +347,44 @@ TEST_CASE("child processes: output, exceptions, crashes, exit status and hangs b
         pollChildren({&a, &b}, 100);
     CHECK(finishChild(a).output.size() == 100000);
     CHECK(finishChild(b).output == "b");
+}
+
+TEST_CASE("errors are counted by kind, without their place") {
+    CHECK(errorKind("a/b c.iv:4:5: unknown node type 'Font' (a type this reader does not know "
+                    "must describe its fields)") == "unknown node type 'Font'");
+    CHECK(errorKind("x.iv:1:1: binary Inventor files are not supported (header '#Inventor V2.1 "
+                    "binary')") == "binary Inventor files are not supported");
+    CHECK(errorKind("unknown field 'vertexProperty' in IndexedFaceSet") ==
+          "unknown field 'vertexProperty' in IndexedFaceSet");
+    CHECK(errorKind("crashed (SIGSEGV)") == "crashed");
+    CHECK(errorKind("note: not a place") == "note: not a place");
+    const auto kinds = countKinds({"a.iv:1:2: unknown node type 'Info'",
+                                   "b.iv:3:4: unknown node type 'Info' (more)",
+                                   "c.iv:5:6: unknown node type 'Font'"});
+    REQUIRE(kinds.size() == 2);
+    CHECK(kinds[0] == std::pair<std::string, int>("unknown node type 'Info'", 2));
+    CHECK(kinds[1] == std::pair<std::string, int>("unknown node type 'Font'", 1));
+    CHECK(formatKinds(kinds, 1) == "2 x unknown node type 'Info'; 1 more kinds");
+    CHECK(formatKinds({}, 5) == "none");
+}
+
+TEST_CASE("the node types a file uses, and those volsg's reader lacks") {
+    const std::string text = "#Inventor V2.1 ascii\n"
+                             "# Comment { not a node\n"
+                             "Separator {\n"
+                             "  DEF shape+0 Cube { width 2 }\n"
+                             "  Info { string \"Fake { \\\" Quoted {\" }\n"
+                             "  IndexedFaceSet {\n"
+                             "    vertexProperty\n"
+                             "    VertexProperty { vertex [ 0 0 0 ] }\n"
+                             "  }\n"
+                             "  USE shape+0\n"
+                             "  Cube{}\n"
+                             "  FooKit { fields [ SFNode part ] part Sphere { } }\n"
+                             "}\n";
+    const std::vector<std::string> names = nodeTypeNames(text);
+    CHECK(names == std::vector<std::string>{"Cube", "FooKit", "IndexedFaceSet", "Info", "Separator",
+                                            "Sphere", "VertexProperty"});
+    const std::vector<std::string> lacking = typesVolsgLacks({"Cube", "NoSuchNodeTypeAtAll"});
+    CHECK(lacking == std::vector<std::string>{"NoSuchNodeTypeAtAll"});
 }

@@ -11,6 +11,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -229,6 +230,13 @@ ModelRow processModel(const Settings& s, const Model& m) {
         if (!messages.empty()) notes.push_back("Coin reading the original: " + shorten(messages));
         if (f.count("camera") && f.at("camera") == "0")
             notes.push_back("rendered through the scene's own camera");
+        std::ifstream in(files.framed, std::ios::binary);
+        const std::string text{std::istreambuf_iterator<char>(in),
+                               std::istreambuf_iterator<char>()};
+        std::string lacking;
+        for (const std::string& type : typesVolsgLacks(nodeTypeNames(text)))
+            lacking += (lacking.empty() ? "" : " ") + type;
+        row.missingTypes = lacking;
     }
 
     // 3. Coin renders the framed copy.
@@ -270,7 +278,7 @@ ModelRow processModel(const Settings& s, const Model& m) {
         if (volsg.ok)
             row.volsgRendered = true;
         else
-            notes.push_back("volsg render: " + shorten(volsg.problem));
+            row.renderError = shorten(volsg.problem);
     }
 
     // 5. Coin reads volsg's write-back of the original; any message is a failure.
@@ -408,12 +416,15 @@ std::vector<std::string> verify(const Settings& s, const std::vector<Model>& mod
         const ModelRow& r = rows[i];
         const Model& m = models[i];
         if (r.model != m.shown) fail(m.shown, "row names '" + r.model + "'");
-        for (const std::string* text : {&r.readError, &r.writeBackError, &r.notes}) {
+        for (const std::string* text :
+             {&r.readError, &r.renderError, &r.writeBackError, &r.notes}) {
             const std::size_t bound = text == &r.notes ? 2 * maxMessageLength : maxMessageLength;
             if (text->size() > bound || oneLine(*text, bound) != *text)
                 fail(m.shown, "a message is not one bounded line: '" + oneLine(*text, 80) + "'");
         }
         if (r.readOk != r.readError.empty()) fail(m.shown, "read flag and error disagree");
+        if (r.volsgRendered && !r.renderError.empty())
+            fail(m.shown, "render flag and error disagree");
         if (r.writeBackOk != r.writeBackError.empty())
             fail(m.shown, "write-back flag and error disagree");
         const ModelFiles files = filesOf(s, m);
@@ -538,6 +549,26 @@ int run(int argc, char** argv) {
                   seconds, s.jobs, s.jobs == 1 ? "" : "s", s.width, s.height);
     std::printf("summary: %s\n%s\n", summaryLine(summary).c_str(), timing);
 
+    // What stops volsg most often, for the node work: kinds of error over all models.
+    std::vector<std::string> readErrors, renderErrors;
+    for (const ModelRow& r : rows) {
+        if (!r.readOk) readErrors.push_back(r.readError);
+        if (!r.renderError.empty()) renderErrors.push_back(r.renderError);
+    }
+    std::vector<std::string> lackedTypes; // one entry per model that uses the type
+    for (const ModelRow& r : rows) {
+        std::istringstream types(r.missingTypes);
+        for (std::string t; types >> t;)
+            lackedTypes.push_back(t);
+    }
+    const std::string lackedKinds = formatKinds(countKinds(lackedTypes), 100);
+    std::printf("node types volsg lacks, by the number of models using them: %s\n",
+                lackedKinds.c_str());
+    const std::string readKinds = formatKinds(countKinds(readErrors), 8);
+    const std::string renderKinds = formatKinds(countKinds(renderErrors), 8);
+    std::printf("volsg reading the originals, errors by kind: %s\n", readKinds.c_str());
+    std::printf("volsg rendering the framed copies, errors by kind: %s\n", renderKinds.c_str());
+
     // Mesa may round the clear colour differently from volsg's PNG writer (0.3: 76 and 77);
     // each image is measured against its own background.
     std::string backgrounds;
@@ -561,9 +592,14 @@ int run(int argc, char** argv) {
     tsv += "# summary: " + summaryLine(summary) + "\n# " + timing + '\n';
     writeTextFile((fs::path(s.out) / "results.tsv").string(), tsv);
     if (!s.markdown.empty()) {
-        const std::string intro = "`" + commandLine(argc, argv) + "`: " + timing +
-                                  ".\n\n**Summary: " + summaryLine(summary) +
-                                  ".** Agree: IoU >= 0.9 and colour difference <= 0.08.\n";
+        const std::string intro =
+            "`" + commandLine(argc, argv) + "`: " + timing +
+            ".\n\n**Summary: " + summaryLine(summary) +
+            ".** Agree: IoU >= 0.9 and colour difference <= 0.08.\n\n" +
+            "volsg reading the originals, errors by kind: " + readKinds +
+            ".\n\nvolsg rendering the framed copies, errors by kind: " + renderKinds +
+            ".\n\nNode types volsg lacks, by the number of models using them: " + lackedKinds +
+            ".\n";
         writeTextFile(s.markdown, markdownTable(rows, intro));
     }
 

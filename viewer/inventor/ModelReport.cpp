@@ -1,11 +1,13 @@
 #include "ModelReport.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
 #include <volsg/core/Error.h>
+#include <volsg/nodes/BuiltinNodes.h>
 
 namespace volsg::coincompare {
 
@@ -96,7 +98,7 @@ bool parseFlag(std::string_view text) {
 }
 
 const char* serialTag = "row1";
-constexpr std::size_t serialFields = 18;
+constexpr std::size_t serialFields = 20;
 
 } // namespace
 
@@ -109,6 +111,8 @@ std::string serialize(const ModelRow& row) {
                                   oneLine(row.readError),
                                   row.coinRendered ? "1" : "0",
                                   row.volsgRendered ? "1" : "0",
+                                  oneLine(row.renderError),
+                                  oneLine(row.missingTypes, 4096),
                                   row.compared ? "1" : "0",
                                   number(double(c.pixelsA)),
                                   number(double(c.pixelsB)),
@@ -142,22 +146,24 @@ ModelRow deserialize(std::string_view line) {
     row.readError = f[4];
     row.coinRendered = parseFlag(f[5]);
     row.volsgRendered = parseFlag(f[6]);
-    row.compared = parseFlag(f[7]);
-    row.comparison.pixelsA = static_cast<long long>(parseNumber(f[8]));
-    row.comparison.pixelsB = static_cast<long long>(parseNumber(f[9]));
-    row.comparison.intersection = static_cast<long long>(parseNumber(f[10]));
-    row.comparison.unionCount = static_cast<long long>(parseNumber(f[11]));
-    row.comparison.iou = parseNumber(f[12]);
-    row.comparison.colourDifference = parseNumber(f[13]);
+    row.renderError = f[7];
+    row.missingTypes = f[8];
+    row.compared = parseFlag(f[9]);
+    row.comparison.pixelsA = static_cast<long long>(parseNumber(f[10]));
+    row.comparison.pixelsB = static_cast<long long>(parseNumber(f[11]));
+    row.comparison.intersection = static_cast<long long>(parseNumber(f[12]));
+    row.comparison.unionCount = static_cast<long long>(parseNumber(f[13]));
+    row.comparison.iou = parseNumber(f[14]);
+    row.comparison.colourDifference = parseNumber(f[15]);
     int rgb[3] = {0, 0, 0};
-    const std::string background(f[14]);
+    const std::string background(f[16]);
     if (std::sscanf(background.c_str(), "%d,%d,%d", &rgb[0], &rgb[1], &rgb[2]) != 3)
         throw volsg::Error("bad colour '" + oneLine(background, 40) + "'");
     for (int k = 0; k < 3; ++k)
         row.coinBackground[k] = static_cast<std::uint8_t>(std::clamp(rgb[k], 0, 255));
-    row.writeBackOk = parseFlag(f[15]);
-    row.writeBackError = f[16];
-    row.notes = f[17];
+    row.writeBackOk = parseFlag(f[17]);
+    row.writeBackError = f[18];
+    row.notes = f[19];
     return row;
 }
 
@@ -202,6 +208,11 @@ std::string readCell(const ModelRow& row) {
     return row.readOk ? "ok" : "error: " + row.readError;
 }
 
+std::string renderCell(const ModelRow& row) {
+    if (row.volsgRendered) return "ok";
+    return row.renderError.empty() ? "-" : "error: " + row.renderError;
+}
+
 std::string writeBackCell(const ModelRow& row) {
     return row.writeBackOk ? "ok" : "error: " + row.writeBackError;
 }
@@ -209,11 +220,13 @@ std::string writeBackCell(const ModelRow& row) {
 } // namespace
 
 std::string tableHeader() {
-    return "model\theader\tvolsg read\tIoU\tcolour diff\tagree\twrite-back read by Coin\tnotes";
+    return "model\theader\tvolsg read\tvolsg render (framed copy)\tnode types volsg lacks\tIoU\t"
+           "colour diff\tagree\twrite-back read by Coin\tnotes";
 }
 
 std::string tableLine(const ModelRow& row) {
-    return row.model + '\t' + row.header + '\t' + readCell(row) + '\t' + formatIoU(row) + '\t' +
+    return row.model + '\t' + row.header + '\t' + readCell(row) + '\t' + renderCell(row) + '\t' +
+           (row.missingTypes.empty() ? "-" : row.missingTypes) + '\t' + formatIoU(row) + '\t' +
            formatColourDifference(row) + '\t' + (row.agree() ? "yes" : "no") + '\t' +
            writeBackCell(row) + '\t' + (row.notes.empty() ? "-" : row.notes);
 }
@@ -239,6 +252,85 @@ std::string summaryLine(const Summary& s) {
            ")";
 }
 
+std::vector<std::string> nodeTypeNames(std::string_view text) {
+    std::vector<std::string> names;
+    std::string last; // the identifier just before, if nothing but space came after it
+    auto isStart = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+    auto isPart = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (std::size_t i = 0; i < text.size();) {
+        const char c = text[i];
+        if (c == '#') { // a comment to the end of the line
+            while (i < text.size() && text[i] != '\n')
+                ++i;
+            last.clear();
+        } else if (c == '"') { // a string, with backslash escapes
+            for (++i; i < text.size() && text[i] != '"'; ++i)
+                if (text[i] == '\\') ++i;
+            ++i;
+            last.clear();
+        } else if (isStart(c)) {
+            const std::size_t start = i;
+            while (i < text.size() && isPart(text[i]))
+                ++i;
+            last = std::string(text.substr(start, i - start));
+        } else if (c == '{') {
+            if (!last.empty()) names.push_back(last);
+            last.clear();
+            ++i;
+        } else {
+            if (!std::isspace(static_cast<unsigned char>(c))) last.clear();
+            ++i;
+        }
+    }
+    std::sort(names.begin(), names.end());
+    names.erase(std::unique(names.begin(), names.end()), names.end());
+    return names;
+}
+
+std::vector<std::string> typesVolsgLacks(const std::vector<std::string>& names) {
+    std::vector<std::string> lacking;
+    for (const std::string& name : names)
+        if (!volsg::nodeTypes().find(name)) lacking.push_back(name);
+    return lacking;
+}
+
+std::string errorKind(std::string_view message) {
+    // "file:line:column: " (the file may hold spaces but not ": ").
+    const std::size_t colonSpace = message.find(": ");
+    if (colonSpace != std::string_view::npos) {
+        const std::string_view head = message.substr(0, colonSpace);
+        const std::size_t c2 = head.rfind(':');
+        const std::size_t c1 = c2 == std::string_view::npos ? c2 : head.rfind(':', c2 - 1);
+        auto digits = [](std::string_view t) {
+            return !t.empty() && t.find_first_not_of("0123456789") == std::string_view::npos;
+        };
+        if (c1 != std::string_view::npos && digits(head.substr(c1 + 1, c2 - c1 - 1)) &&
+            digits(head.substr(c2 + 1)))
+            message.remove_prefix(colonSpace + 2);
+    }
+    const std::size_t paren = message.find(" (");
+    return oneLine(message.substr(0, paren));
+}
+
+std::vector<std::pair<std::string, int>> countKinds(const std::vector<std::string>& messages) {
+    std::map<std::string, int> counts;
+    for (const std::string& m : messages)
+        ++counts[errorKind(m)];
+    std::vector<std::pair<std::string, int>> kinds(counts.begin(), counts.end());
+    std::stable_sort(kinds.begin(), kinds.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    return kinds;
+}
+
+std::string formatKinds(const std::vector<std::pair<std::string, int>>& kinds, std::size_t limit) {
+    std::string text;
+    for (std::size_t i = 0; i < kinds.size() && i < limit; ++i)
+        text +=
+            (text.empty() ? "" : "; ") + std::to_string(kinds[i].second) + " x " + kinds[i].first;
+    if (kinds.size() > limit) text += "; " + std::to_string(kinds.size() - limit) + " more kinds";
+    return text.empty() ? "none" : text;
+}
+
 bool meetsAgreement(const Summary& s, double fraction) {
     if (fraction <= 0.0) return true;
     // agree/models >= fraction, without dividing (no rounding at exactly the threshold).
@@ -261,14 +353,15 @@ std::string markdownCell(const std::string& text) {
 std::string markdownTable(const std::vector<ModelRow>& rows, const std::string& intro) {
     std::string md = intro;
     if (!md.empty() && md.back() != '\n') md += '\n';
-    md += "\n| model | header | volsg read | IoU | colour diff | agree | write-back read by Coin | "
-          "notes | why it differs |\n";
-    md += "| --- | --- | --- | ---: | ---: | --- | --- | --- | --- |\n";
+    md += "\n| model | header | volsg read | volsg render (framed copy) | node types volsg lacks | "
+          "IoU | colour diff | agree | write-back read by Coin | notes | why it differs |\n";
+    md += "| --- | --- | --- | --- | --- | ---: | ---: | --- | --- | --- | --- |\n";
     for (const ModelRow& r : rows) {
         md += "| " + markdownCell(r.model) + " | " + markdownCell(r.header) + " | " +
-              markdownCell(readCell(r)) + " | " + formatIoU(r) + " | " + formatColourDifference(r) +
-              " | " + (r.agree() ? "yes" : "no") + " | " + markdownCell(writeBackCell(r)) + " | " +
-              markdownCell(r.notes) + " |   |\n";
+              markdownCell(readCell(r)) + " | " + markdownCell(renderCell(r)) + " | " +
+              markdownCell(r.missingTypes) + " | " + formatIoU(r) + " | " +
+              formatColourDifference(r) + " | " + (r.agree() ? "yes" : "no") + " | " +
+              markdownCell(writeBackCell(r)) + " | " + markdownCell(r.notes) + " |   |\n";
     }
     return md;
 }

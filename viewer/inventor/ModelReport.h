@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "ImageCompare.h"
@@ -35,6 +36,12 @@ struct ModelRow {
     std::string readError; ///< volsg's error reading the original (one line), when !readOk
     bool coinRendered = false;
     bool volsgRendered = false;
+    /// volsg's error reading or rendering the framed copy (one line), when Coin framed the model
+    /// and volsg did not render it.
+    std::string renderError;
+    /// The node types of the framed copy that volsg's reader does not know, sorted, separated
+    /// by spaces ("" when none or not framed).
+    std::string missingTypes;
     bool compared = false; ///< both rendered: `comparison` holds the numbers
     Comparison comparison;
     Rgb8 coinBackground{}; ///< the colour Coin's clear left (compared against), when Coin rendered
@@ -68,6 +75,20 @@ struct Summary {
 Summary summarize(const std::vector<ModelRow>& rows);
 /// "read 5/97, agree 3/97, written back ok 2/97 (rendered: Coin 97/97, volsg 10/97)".
 std::string summaryLine(const Summary& s);
+
+/// The node type names an Inventor ASCII text uses (each name written before a '{', outside
+/// comments and strings), sorted, each once.
+std::vector<std::string> nodeTypeNames(std::string_view text);
+/// Those of `names` that volsg's reader does not know (volsg::nodeTypes()).
+std::vector<std::string> typesVolsgLacks(const std::vector<std::string>& names);
+
+/// What kind of error a message is: without its "file:line:column: " and anything from " ("
+/// on, so that the same problem in many models counts once ("unknown node type 'Info'").
+std::string errorKind(std::string_view message);
+/// The kinds of the given messages, most frequent first (ties by name), with their counts.
+std::vector<std::pair<std::string, int>> countKinds(const std::vector<std::string>& messages);
+/// "12 x unknown node type 'Info'; 3 x ..." for the `limit` most frequent kinds.
+std::string formatKinds(const std::vector<std::pair<std::string, int>>& kinds, std::size_t limit);
 
 /// True when at least `fraction` of the models agree (a fraction in [0,1]; 0 always holds).
 bool meetsAgreement(const Summary& s, double fraction);
