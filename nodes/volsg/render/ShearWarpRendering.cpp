@@ -35,6 +35,7 @@ void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
     view.threads = node.threads();
     view.valueSortedMip = node.valueSortedMip();
     view.sliceStep = node.sliceStepFor(frame.interactive, frame.interactivePlaneScale);
+    view.simd = frame.debug.vectorKernels ? bestSimdLevel() : SimdLevel::Scalar;
     std::vector<SceneLight> lights;
     action.lightsInScope(lights);
     for (const SceneLight& l : lights)
