@@ -7,7 +7,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -22,16 +21,15 @@
 #include <volsg/render/RenderTarget.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
-#include <volsg/slicing/BrickTexels.h>
 #include <volsg/slicing/CellRows.h>
 #include <volsg/slicing/DataFormat.h>
 #include <volsg/slicing/EmptyCells.h>
-#include <volsg/slicing/GridMeasures.h>
 #include <volsg/slicing/PreIntegrationTable.h>
 #include <volsg/slicing/ProxyPlaneCutter.h>
 #include <volsg/slicing/SliceShared.h>
 #include <volsg/slicing/TextureStaging.h>
 #include <volsg/slicing/TransferTable.h>
+#include <volsg/slicing/VolumeTextures.h>
 #include <volsg/volume/VolumeGrid.h>
 
 namespace volsg {
@@ -47,342 +45,6 @@ constexpr double kRowCutBudget = 20000.0;
 constexpr long kMinScaledPlanes = 8;
 /// Inventor's default environment: white ambient light of intensity 0.2 (as shapes use).
 constexpr float kAmbientIntensity = 0.2f;
-
-/// One brick's textures and what the CPU knows about its voxels.
-struct BrickState {
-    Texture data, tags;
-    bool resident = false;
-    std::uint64_t lastUse = 0;
-    double dataMin = 0.0, dataMax = 0.0; ///< over the texture's voxels (non-finite replaced)
-    int tagMin = 0, tagMax = 0;
-    bool mayEmit = true; ///< under the current transfer functions
-    GLint first = 0;     ///< this frame's slice vertices
-    GLsizei count = 0;
-    GLint faceFirst = 0; ///< this frame's front faces on the volume box (sliver rays)
-    GLsizei faceCount = 0;
-    /// This frame's rows of non-empty cells (CellRows), each drawn with its own box; empty:
-    /// the whole brick is one draw.
-    std::vector<CellRow> rows;
-    std::vector<GLint> rowFirst;
-    std::vector<GLsizei> rowCount;
-};
-
-/// Per volume (node and grid): bricks, tables and geometry, kept across frames.
-struct VolumeTextures {
-    ref_ptr<const VolumeGrid> data, tags;
-    DataFormat format;
-    double finiteMin = 0.0, finiteMax = 0.0;
-    glm::dvec2 naturalRange{0.0, 1.0};
-
-    bool hasLayout = false;
-    std::uint64_t layoutBudget = 0;
-    int layoutGuard = 0;
-    BrickLayout layout;
-    std::vector<BrickState> bricks;
-    std::size_t residentBytes = 0;
-    std::uint64_t useCounter = 0;
-    bool filterNearest = false;
-
-    bool hasTable = false;
-    std::uint64_t tableKey = 0;
-    TransferTable table;
-    Texture tableTexture, tagRowTexture;
-
-    EmptyCells cells;    ///< measured on first use
-    Texture cellTexture; ///< EmptyCells::flags as R8UI, one texel per cell
-    std::uint64_t cellTableKey = 0;
-    int cellKind = -1; ///< 0 DVR, 1 MIP flags in cellTexture; -1 none yet
-    CellRows rows;     ///< the cell flags dilated by rowsReach
-    int rowsReach = -1;
-    std::uint64_t rowsTableKey = 0;
-    int rowsKind = -1;
-
-    bool hasPreIntegration = false;
-    PreIntegrationTable preIntegration;
-    Texture preIntegrationTexture;
-
-    std::vector<PiecewiseLinear::Point> planeOpacity;
-    Texture planeOpacityTexture;
-
-    Buffer vertexBuffer;
-    VertexArray vertexArray;
-    std::vector<glm::vec3> vertices;
-    ProxySlices slices;
-    std::vector<int> order;
-    std::vector<std::uint32_t> scratch; ///< converted texels of a brick (4-byte aligned)
-    /// The grid's bricks staged before it was shown (TextureStaging.h); dropped after the
-    /// first frame's uploads.
-    std::unique_ptr<StagedGrid> staged;
-    /// The previous grid's brick textures (a series' last step), refilled in place when a
-    /// brick of this grid has their size and format: on llvmpipe a new 256^3 R16 texture
-    /// costs 28 ms against 10 ms to overwrite one (its pages are fresh). Freed after the frame.
-    std::vector<Texture> spareTextures;
-
-    SlicingStats totals;
-};
-
-// ---------------------------------------------------------------------------------------------
-// Voxels of a brick
-
-/// The staged grid's measures, when they are of this grid with its labels (a grid staged
-/// without them, for an untagged table, has no tag ranges a later tagged table would need).
-const GridMeasures* stagedMeasures(const VolumeTextures& v) {
-    return v.staged && v.staged->data() == v.data.get() && v.staged->tags() == v.tags.get()
-               ? &v.staged->measures()
-               : nullptr;
-}
-
-/// Brick ranges of the layout: from the staged grid's measures when they are of this layout.
-void measureBricks(VolumeTextures& v) {
-    std::vector<BrickRange> measured;
-    if (const GridMeasures* m = stagedMeasures(v); m && m->sameBricks(v.layout))
-        measured = m->ranges;
-    else
-        measured = measureBrickRanges(*v.data, v.tags.get(), v.layout, v.finiteMin, v.finiteMax);
-    for (std::size_t i = 0; i < v.bricks.size(); ++i) {
-        BrickState& s = v.bricks[i];
-        s.dataMin = measured[i].dataMin;
-        s.dataMax = measured[i].dataMax;
-        s.tagMin = measured[i].tagMin;
-        s.tagMax = measured[i].tagMax;
-    }
-}
-
-/// A spare texture of this size and format (moved out of v.spareTextures), else a new one.
-Texture spareTexture(VolumeTextures& v, GLenum internalFormat, const glm::ivec3& size) {
-    for (auto it = v.spareTextures.begin(); it != v.spareTextures.end(); ++it)
-        if (it->internalFormat() == internalFormat && it->width() == size.x &&
-            it->height() == size.y && it->depth() == size.z) {
-            Texture t = std::move(*it);
-            v.spareTextures.erase(it);
-            return t;
-        }
-    return Texture(GL_TEXTURE_3D);
-}
-
-/// Uploads brick i's textures: from the staged buffer when the grid was staged with this
-/// brick (the same bytes, BrickTexels.h), else from the grid's memory or converted texels.
-void uploadBrick(VolumeTextures& v, std::size_t i, const Brick& b, BrickState& s, bool withTags) {
-    const VolumeGrid& grid = *v.data;
-    const bool staged = v.staged && v.staged->covers(i, b, withTags);
-    std::optional<StagedGrid::Binding> binding;
-    if (staged) binding.emplace(*v.staged); // the pointers below are offsets into the buffer
-    auto converted = [&](std::size_t texelBytes, auto write) -> const void* {
-        v.scratch.resize((b.texels() * texelBytes + 3) / 4);
-        write(static_cast<void*>(v.scratch.data()));
-        return v.scratch.data();
-    };
-    // From the buffer the source is an offset, and the first brick's is 0: a null pointer.
-    const void* pixels = staged ? v.staged->dataSource(i) : directBrickTexels(grid, b);
-    if (!staged && !pixels)
-        pixels = converted(uploadTexelBytes(grid.type()), [&](void* out) {
-            writeBrickTexels(grid, b, v.finiteMin, v.finiteMax, out);
-        });
-    if (!s.data) s.data = spareTexture(v, v.format.internalFormat, b.voxelCount);
-    if (s.data.internalFormat() == v.format.internalFormat && s.data.width() == b.voxelCount.x &&
-        s.data.height() == b.voxelCount.y && s.data.depth() == b.voxelCount.z) {
-        ++v.totals.refilledTextures;
-        s.data.subImage(0, 0, 0, b.voxelCount.x, b.voxelCount.y, b.voxelCount.z, GL_RED,
-                        v.format.type, pixels);
-    } else {
-        s.data.image3D(v.format.internalFormat, b.voxelCount.x, b.voxelCount.y, b.voxelCount.z,
-                       GL_RED, v.format.type, pixels);
-    }
-    const GLenum filter = v.filterNearest ? GL_NEAREST : GL_LINEAR;
-    s.data.setFilter(filter, filter);
-    std::size_t bytes = b.texels() * v.format.texelBytes;
-
-    if (withTags) {
-        const VolumeGrid& tags = *v.tags;
-        const bool wide = tags.type() == VoxelType::UShort;
-        const void* labels = staged ? v.staged->tagSource(i) : directBrickLabels(tags, b);
-        if (!staged && !labels)
-            labels = converted(wide ? 2 : 1, [&](void* out) { writeBrickLabels(tags, b, out); });
-        if (!s.tags) {
-            s.tags = Texture(GL_TEXTURE_3D);
-            s.tags.setFilter(GL_NEAREST, GL_NEAREST); // integer textures are never filtered
-        }
-        s.tags.image3D(wide ? GL_R16UI : GL_R8UI, b.voxelCount.x, b.voxelCount.y, b.voxelCount.z,
-                       GL_RED_INTEGER, wide ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE, labels);
-        bytes += b.texels() * (wide ? 2 : 1);
-    } else {
-        s.tags = Texture();
-    }
-    s.resident = true;
-    v.residentBytes += bytes;
-    ++v.totals.brickUploads;
-    v.totals.uploadedBytes += bytes;
-    if (staged) ++v.totals.stagedUploads;
-}
-
-std::size_t residentBytesOf(const VolumeTextures& v, const Brick& b, const BrickState& s) {
-    std::size_t bytes = b.texels() * v.format.texelBytes;
-    if (s.tags) bytes += b.texels() * (v.tags->type() == VoxelType::UShort ? 2 : 1);
-    return bytes;
-}
-
-void release(VolumeTextures& v, std::size_t i) {
-    BrickState& s = v.bricks[i];
-    if (!s.resident) return;
-    v.residentBytes -= residentBytesOf(v, v.layout.bricks()[i], s);
-    s.data = Texture();
-    s.tags = Texture();
-    s.resident = false;
-}
-
-/// Makes brick i resident, first evicting the least recently used others while the budget
-/// would be exceeded (bricks drawn earlier in this frame may go: their draws are issued). So
-/// a volume whose visible bricks exceed the budget streams them, as the seed's bricking does.
-void makeResident(VolumeTextures& v, std::size_t i, std::uint64_t budget, bool withTags) {
-    BrickState& s = v.bricks[i];
-    if (s.resident && bool(s.tags) != withTags) release(v, i);
-    if (!s.resident) {
-        activateUploadUnit();
-        const Brick& b = v.layout.bricks()[i];
-        const std::size_t need =
-            b.texels() *
-            (v.format.texelBytes + (withTags ? (v.tags->type() == VoxelType::UShort ? 2 : 1) : 0));
-        while (budget > 0 && v.residentBytes + need > budget) {
-            std::size_t victim = v.bricks.size();
-            for (std::size_t j = 0; j < v.bricks.size(); ++j)
-                if (j != i && v.bricks[j].resident &&
-                    (victim == v.bricks.size() || v.bricks[j].lastUse < v.bricks[victim].lastUse))
-                    victim = j;
-            if (victim == v.bricks.size()) break;
-            release(v, victim);
-        }
-        uploadBrick(v, i, b, s, withTags);
-    }
-    s.lastUse = ++v.useCounter;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Per-frame preparation
-
-void prepareGrid(VolumeTextures& v, const RayCastVolume& volume) {
-    if (v.data) return;
-    v.data = volume.data;
-    v.tags = volume.tags;
-    v.format = dataFormatOf(v.data->type());
-    if (const GridMeasures* m = stagedMeasures(v)) { // measured ahead, with the texels
-        v.finiteMin = m->finiteMin;
-        v.finiteMax = m->finiteMax;
-    } else {
-        std::tie(v.finiteMin, v.finiteMax) = v.data->minMax(); // finite values only
-    }
-    const auto [natLo, natHi] = v.data->naturalRange();
-    v.naturalRange = {natLo, natHi};
-}
-
-/// How a grid is split into bricks (prepareLayout, and the staging of the next grid).
-BrickLayout::Limits layoutLimits(const VolumeGrid& data, const VolumeGrid* tags,
-                                 const SliceShared& shared, std::uint64_t budget, int guard) {
-    BrickLayout::Limits limits;
-    limits.budgetBytes = budget;
-    limits.maxTextureSize = shared.max3DTextureSize;
-    limits.bytesPerVoxel = dataFormatOf(data.type()).texelBytes +
-                           (tags ? (tags->type() == VoxelType::UShort ? 2 : 1) : 0);
-    limits.guard = guard;
-    return limits;
-}
-
-void prepareLayout(VolumeTextures& v, const SliceShared& shared, std::uint64_t budget, int guard) {
-    if (v.hasLayout && v.layoutBudget == budget && v.layoutGuard == guard) return;
-    for (std::size_t i = 0; i < v.bricks.size(); ++i)
-        release(v, i);
-    v.layout = BrickLayout(v.data->dimensions(), v.data->spacing(),
-                           layoutLimits(*v.data, v.tags.get(), shared, budget, guard));
-    v.bricks.clear();
-    v.bricks.resize(v.layout.bricks().size());
-    measureBricks(v);
-    v.hasLayout = true;
-    v.layoutBudget = budget;
-    v.layoutGuard = guard;
-    v.hasTable = false; // emptiness is decided with the table
-}
-
-void prepareTable(VolumeTextures& v, const RayCastVolume& volume, std::uint64_t key) {
-    if (v.hasTable && v.tableKey == key) return;
-    v.table.build(volume.transferFunctions, v.naturalRange);
-    GLint maxSize = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-    if (v.table.rows() > maxSize)
-        throw Error(std::to_string(v.table.rows() - 1) +
-                    " tagged transfer functions apply to one volume; at most " +
-                    std::to_string(maxSize - 1) + " fit its transfer table");
-    if (!v.tableTexture) v.tableTexture = Texture(GL_TEXTURE_2D); // linear, clamped
-    v.tableTexture.image2D(GL_RGBA32F, TransferTable::kWidth, v.table.rows(), GL_RGBA, GL_FLOAT,
-                           v.table.texels().data());
-    if (v.table.rows() > 1) {
-        if (!v.tagRowTexture) {
-            v.tagRowTexture = Texture(GL_TEXTURE_2D);
-            v.tagRowTexture.setFilter(GL_NEAREST, GL_NEAREST);
-        }
-        v.tagRowTexture.image2D(GL_R16UI, TransferTable::kTagMapSide, TransferTable::kTagMapSide,
-                                GL_RED_INTEGER, GL_UNSIGNED_SHORT, v.table.tagRows().data());
-    }
-    const bool tagged = v.tags && v.table.rows() > 1;
-    for (BrickState& s : v.bricks)
-        s.mayEmit = v.table.mayEmit(s.dataMin, s.dataMax, tagged, s.tagMin, s.tagMax);
-    v.hasTable = true;
-    v.tableKey = key;
-    v.hasPreIntegration = false;
-    ++v.totals.transferTableBuilds;
-}
-
-/// The empty-cell flags for this table and kind (DVR: may emit; MIP: may be a shown maximum),
-/// measured on first use and uploaded when the table or the kind changes.
-void prepareCells(VolumeTextures& v, int kind) {
-    if (!v.cells.measured()) {
-        if (const GridMeasures* m = stagedMeasures(v); m && m->cells.measured())
-            v.cells = m->cells;
-        else
-            v.cells.measure(*v.data, v.tags.get(), v.finiteMin, v.finiteMax);
-    }
-    if (v.cellKind == kind && v.cellTableKey == v.tableKey) return;
-    const bool tagged = v.tags && v.table.rows() > 1;
-    v.cells.classify(v.table, tagged, kind == 1);
-    if (!v.cellTexture) {
-        v.cellTexture = Texture(GL_TEXTURE_3D);
-        v.cellTexture.setFilter(GL_NEAREST, GL_NEAREST);
-    }
-    const glm::ivec3 n = v.cells.cells();
-    v.cellTexture.image3D(GL_R8UI, n.x, n.y, n.z, GL_RED_INTEGER, GL_UNSIGNED_BYTE,
-                          v.cells.flags().data());
-    v.cellKind = kind;
-    v.cellTableKey = v.tableKey;
-}
-
-void preparePreIntegration(VolumeTextures& v) {
-    if (v.hasPreIntegration) return;
-    v.preIntegration.build(v.table.function(0));
-    if (!v.preIntegrationTexture) v.preIntegrationTexture = Texture(GL_TEXTURE_2D);
-    v.preIntegrationTexture.image2D(GL_RGBA32F, PreIntegrationTable::kSize,
-                                    PreIntegrationTable::kSize, GL_RGBA, GL_FLOAT,
-                                    v.preIntegration.texels().data());
-    v.hasPreIntegration = true;
-    ++v.totals.preIntegrationBuilds;
-}
-
-/// Whether planeOpacity changes anything: m = 1 everywhere needs no lookup.
-bool planeOpacityMatters(const std::vector<PiecewiseLinear::Point>& points) {
-    return std::any_of(points.begin(), points.end(),
-                       [](const PiecewiseLinear::Point& p) { return p.y != 1.0; });
-}
-
-void preparePlaneOpacity(VolumeTextures& v, const std::vector<PiecewiseLinear::Point>& points) {
-    if (v.planeOpacityTexture && v.planeOpacity == points) return;
-    const PiecewiseLinear m(points);
-    std::vector<float> samples(kPlaneOpacitySize);
-    for (int i = 0; i < kPlaneOpacitySize; ++i)
-        samples[std::size_t(i)] = float(std::max(0.0, m(double(i) / (kPlaneOpacitySize - 1))));
-    if (!v.planeOpacityTexture) {
-        v.planeOpacityTexture = Texture(GL_TEXTURE_1D);
-        v.planeOpacityTexture.setFilter(GL_NEAREST, GL_NEAREST);
-    }
-    v.planeOpacityTexture.image1D(GL_R32F, kPlaneOpacitySize, GL_RED, GL_FLOAT, samples.data());
-    v.planeOpacity = points;
-}
 
 /// Eye depths of the camera's near and far planes, from the projection matrix.
 glm::dvec2 nearFar(const glm::dmat4& p, bool orthographic) {
@@ -439,33 +101,10 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     const Mode mode = modeOf(volume.mode);
 
     SliceShared& shared = sliceSharedOf(frame);
-    // Keyed by the grids too: new data (a VolumeData reload) starts a fresh cache and the old
-    // one is dropped after this frame.
-    const std::uint64_t key =
-        std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())) ^
-        (std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.tags.get())) << 1);
+    const std::uint64_t key = textureKeyOf(volume);
     VolumeTextures& v = frame.cache.get<VolumeTextures>(owner, key);
     TextureStaging& staging = frame.cache.get<TextureStaging>(owner);
-    if (!v.data && staging.next && staging.next->data() == volume.data.get() &&
-        (!staging.next->tags() || staging.next->tags() == volume.tags.get()))
-        v.staged = std::move(staging.next); // staged while the previous step was shown
-    if (v.staged) {
-        try {
-            v.staged->finish();
-        } catch (const Error&) {
-            v.staged.reset(); // the buffer was lost: upload directly
-        }
-    }
-    if (!v.data && staging.lastKey != 0 && staging.lastKey != key) {
-        // A new grid for this node (a series step): the last grid's textures are refilled
-        // instead of allocated anew. Its entry is dropped after this frame anyway.
-        VolumeTextures& last = frame.cache.get<VolumeTextures>(owner, staging.lastKey);
-        for (BrickState& s : last.bricks)
-            if (s.data) v.spareTextures.push_back(std::move(s.data));
-        last.bricks.clear();
-        last.residentBytes = 0;
-    }
-    staging.lastKey = key;
+    adoptGrid(frame.cache, owner, key, v, staging, volume);
     prepareGrid(v, volume);
 
     const bool lighting = settings.lighting && mode == kDvr;
@@ -491,12 +130,7 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     if (skipCells) prepareCells(v, mode == kMip ? 1 : 0);
     const bool hasPlaneOpacity = mode == kDvr && planeOpacityMatters(volume.planeOpacity);
     if (hasPlaneOpacity) preparePlaneOpacity(v, volume.planeOpacity);
-    if (v.filterNearest != settings.nearest) {
-        v.filterNearest = settings.nearest;
-        const GLenum filter = v.filterNearest ? GL_NEAREST : GL_LINEAR;
-        for (BrickState& s : v.bricks)
-            if (s.resident) s.data.setFilter(filter, filter);
-    }
+    prepareFilter(v, settings.nearest);
 
     // The view in the volume's local coordinates.
     const RenderView& view = frame.view;
