@@ -1,6 +1,5 @@
 #pragma once
-// The Volume slicer's GL work of a frame: the slice program and its uniforms, the textures,
-// the bricks' draws, and the composite of the projection modes.
+// The Volume slicer's GL work of a frame: program, uniforms, textures, brick draws, composite.
 
 #include <span>
 

@@ -1,6 +1,5 @@
 #pragma once
-// The Volume slicer's geometry of a frame: the view in local coordinates, the plane layout,
-// the clip planes, the rows of cells and the slices and faces cut from each brick.
+// The Volume slicer's geometry of a frame: view, plane layout, clip planes, brick slices.
 
 #include <vector>
 

@@ -1,6 +1,5 @@
 #pragma once
-// The plain data one frame of the Volume slicer hands from stage to stage: how it draws, the
-// view in the volume's coordinates, the plane layout, the clip planes and the rows of cells.
+// The plain data one frame of the Volume slicer hands from stage to stage.
 
 #include <vector>
 

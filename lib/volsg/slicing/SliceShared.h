@@ -1,6 +1,5 @@
 #pragma once
-// The Volume slicer's GL resources per context: program variants, texture units, the
-// projection target of MIP/MINIP/AVERAGE and the copy of the opaque depth.
+// The Volume slicer's GL resources per context: programs, texture units, projection target.
 
 #include <map>
 

@@ -1,6 +1,5 @@
 #pragma once
-// The Volume slicer's GPU state per volume (bricks, tables, geometry buffers), kept across
-// frames, and the functions that bring it up to date and keep bricks resident.
+// The Volume slicer's state per volume (bricks, tables, buffers) and the functions on it.
 
 #include <cstddef>
 #include <cstdint>
