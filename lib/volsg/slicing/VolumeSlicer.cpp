@@ -1,583 +1,25 @@
+// The Volume slicer's frame as a list of stages, and the staging of a series' next grid.
 #include <volsg/slicing/VolumeSlicer.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <cstdlib>
-#include <limits>
-#include <map>
 #include <memory>
-#include <optional>
-#include <string>
-#include <type_traits>
-#include <vector>
 
 #include <volsg/core/Error.h>
-#include <volsg/gl/Buffer.h>
-#include <volsg/gl/Framebuffer.h>
-#include <volsg/gl/Program.h>
-#include <volsg/gl/Shader.h>
-#include <volsg/gl/Texture.h>
-#include <volsg/gl/VertexArray.h>
-#include <volsg/render/FrameContext.h>
-#include <volsg/render/RenderTarget.h>
-#include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
-#include <volsg/slicing/BrickTexels.h>
-#include <volsg/slicing/CellRows.h>
-#include <volsg/slicing/DataFormat.h>
-#include <volsg/slicing/EmptyCells.h>
-#include <volsg/slicing/GridMeasures.h>
-#include <volsg/slicing/PreIntegrationTable.h>
-#include <volsg/slicing/ProxyPlaneCutter.h>
-#include <volsg/slicing/SliceShaders.h>
+#include <volsg/slicing/SliceDraw.h>
+#include <volsg/slicing/SliceGeometry.h>
+#include <volsg/slicing/SlicePlan.h>
+#include <volsg/slicing/SliceShared.h>
 #include <volsg/slicing/TextureStaging.h>
-#include <volsg/slicing/TransferTable.h>
+#include <volsg/slicing/VolumeTextures.h>
 #include <volsg/volume/VolumeGrid.h>
 
 namespace volsg {
 
+using namespace slicing;
+
 namespace {
-
-constexpr int kMaxClipPlanes = 32;
-constexpr int kMaxLights = 8;
-constexpr int kPlaneOpacitySize = 1024;
-constexpr int kMaxPlanes = 100000;
-/// Planes x rows of empty-space cells above which the rows grow (see rowGroup in render).
-constexpr double kRowCutBudget = 20000.0;
-/// The fewest planes the viewer's interactive plane scale may leave (unless fewer were asked).
-constexpr long kMinScaledPlanes = 8;
-/// Inventor's default environment: white ambient light of intensity 0.2 (as shapes use).
-constexpr float kAmbientIntensity = 0.2f;
-
-enum TextureUnit : GLuint {
-    kDataUnit = 0,
-    kTagUnit = 1,
-    kTagRowUnit = 2,
-    kTableUnit = 3,
-    kPreIntegratedUnit = 4,
-    kPlaneOpacityUnit = 5,
-    kProjectedUnit = 6,
-    kOpaqueDepthUnit = 7,
-    kCellsUnit = 8,
-    /// Active while textures are created or uploaded (Texture binds them to the active unit),
-    /// so that no upload replaces a texture bound for drawing.
-    kUploadUnit = 15
-};
-
-void activateUploadUnit() {
-    glActiveTexture(GL_TEXTURE0 + kUploadUnit);
-}
-
-enum Mode { kDvr = 0, kMip = 1, kMinip = 2, kAverage = 3 };
-
-Mode modeOf(VolumeRenderMode m) {
-    switch (m) {
-    case VolumeRenderMode::MIP:
-        return kMip;
-    case VolumeRenderMode::MINIP:
-        return kMinip;
-    case VolumeRenderMode::AVERAGE:
-        return kAverage;
-    case VolumeRenderMode::DVR:
-        break;
-    }
-    return kDvr;
-}
-
-std::string prelude(int mode, bool tagged, bool lighting, bool preIntegrated, bool lean = false) {
-    std::string s = "#version 330 core\n#define MODE " + std::to_string(mode) + "\n";
-    if (lean) s += "#define LEAN\n";
-    if (tagged) s += "#define TAGGED\n";
-    if (lighting) s += "#define LIGHTING\n";
-    if (preIntegrated) s += "#define PREINTEGRATED\n";
-    s += "#define ENTRIES " + std::to_string(TransferTable::kEntries) + "\n";
-    s += "#define PRE_SIZE " + std::to_string(PreIntegrationTable::kSize) + "\n";
-    s += "#define PLANE_OPACITY_SIZE " + std::to_string(kPlaneOpacitySize) + "\n";
-    s += "#define MAX_CLIP_PLANES " + std::to_string(kMaxClipPlanes) + "\n";
-    s += "#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
-    return s;
-}
-
-void setSamplers(const Program& p) {
-    p.use();
-    p.set("uData", int(kDataUnit));
-    p.set("uTags", int(kTagUnit));
-    p.set("uTagRows", int(kTagRowUnit));
-    p.set("uTable", int(kTableUnit));
-    p.set("uPreIntegrated", int(kPreIntegratedUnit));
-    p.set("uPlaneOpacity", int(kPlaneOpacityUnit));
-    p.set("uProjected", int(kProjectedUnit));
-    p.set("uOpaqueDepth", int(kOpaqueDepthUnit));
-    p.set("uCells", int(kCellsUnit));
-}
-
-/// Per GL context: the program variants and the projection target of MIP/MINIP/AVERAGE.
-struct SliceShared {
-    std::map<int, Program> slicePrograms;
-    std::map<int, Program> compositePrograms;
-    VertexArray emptyVertexArray;
-    Framebuffer projectionFramebuffer;
-    Texture projected[2]; ///< [0] R32F keys (MIP, MINIP), [1] RG32F sums (AVERAGE)
-    glm::ivec2 projectedSize[2]{glm::ivec2(0), glm::ivec2(0)};
-    GLuint attachedDepth = 0;
-    Framebuffer opaqueDepthFramebuffer;
-    Texture opaqueDepth;
-    glm::ivec2 opaqueDepthSize{0};
-    int driverMax3DTextureSize = 0; ///< GL_MAX_3D_TEXTURE_SIZE
-    int max3DTextureSize = 0;       ///< what bricks use (RenderDebug may lower it)
-
-    /// `lean`: the variant with only the slab loop of samples that all count alike (see
-    /// LEAN in SliceShaders.h); the caller decides when that holds.
-    const Program& sliceProgram(int mode, bool tagged, bool lighting, bool preIntegrated,
-                                bool lean) {
-        const int key = mode | (tagged ? 4 : 0) | (lighting ? 8 : 0) | (preIntegrated ? 16 : 0) |
-                        (lean ? 32 : 0);
-        auto it = slicePrograms.find(key);
-        if (it != slicePrograms.end()) return it->second;
-        const std::string head = prelude(mode, tagged, lighting, preIntegrated, lean);
-        const Shader vertex(GL_VERTEX_SHADER, head + shaders::sliceVertex, "volume slice");
-        const Shader fragment(GL_FRAGMENT_SHADER,
-                              head + shaders::sliceCommon + shaders::sliceFragment, "volume slice");
-        Program p({&vertex, &fragment}, "volume slice");
-        setSamplers(p);
-        return slicePrograms.emplace(key, std::move(p)).first->second;
-    }
-
-    const Program& compositeProgram(int mode) {
-        auto it = compositePrograms.find(mode);
-        if (it != compositePrograms.end()) return it->second;
-        const std::string head = prelude(mode, false, false, false);
-        const Shader vertex(GL_VERTEX_SHADER, head + shaders::compositeVertex, "volume composite");
-        const Shader fragment(GL_FRAGMENT_SHADER,
-                              head + shaders::sliceCommon + shaders::compositeFragment,
-                              "volume composite");
-        Program p({&vertex, &fragment}, "volume composite");
-        setSamplers(p);
-        return compositePrograms.emplace(mode, std::move(p)).first->second;
-    }
-
-    /// Copies the opaque pass's depth into a texture the slices may read: sampling the depth
-    /// attached to the framebuffer being drawn would be a feedback loop.
-    void copyOpaqueDepth(RenderTarget& target) {
-        activateUploadUnit();
-        const glm::ivec2 size(target.width(), target.height());
-        if (!opaqueDepthFramebuffer) {
-            opaqueDepthFramebuffer = Framebuffer::create();
-            opaqueDepth = Texture(GL_TEXTURE_2D);
-            opaqueDepth.setFilter(GL_NEAREST, GL_NEAREST);
-        }
-        if (opaqueDepthSize != size) {
-            opaqueDepth.image2D(GL_DEPTH_COMPONENT32F, size.x, size.y, GL_DEPTH_COMPONENT, GL_FLOAT,
-                                nullptr);
-            opaqueDepthFramebuffer.attach(GL_DEPTH_ATTACHMENT, opaqueDepth);
-            glDrawBuffer(GL_NONE);
-            glReadBuffer(GL_NONE);
-            opaqueDepthFramebuffer.requireComplete("volume opaque-depth copy");
-            opaqueDepthSize = size;
-        }
-        target.framebuffer().bind(GL_READ_FRAMEBUFFER);
-        opaqueDepthFramebuffer.bind(GL_DRAW_FRAMEBUFFER);
-        glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_DEPTH_BUFFER_BIT,
-                          GL_NEAREST);
-        target.bind();
-    }
-
-    /// Binds the projection target (sharing the render target's opaque depth) and clears it.
-    void beginProjection(RenderTarget& target, int which, float clearValue) {
-        activateUploadUnit();
-        const glm::ivec2 size(target.width(), target.height());
-        bool reattach = false;
-        if (!projectionFramebuffer) projectionFramebuffer = Framebuffer::create();
-        if (!projected[which]) {
-            projected[which] = Texture(GL_TEXTURE_2D);
-            projected[which].setFilter(GL_NEAREST, GL_NEAREST);
-        }
-        if (projectedSize[which] != size) {
-            projected[which].image2D(which == 0 ? GL_R32F : GL_RG32F, size.x, size.y,
-                                     which == 0 ? GL_RED : GL_RG, GL_FLOAT, nullptr);
-            projectedSize[which] = size;
-            reattach = true;
-        }
-        projectionFramebuffer.attach(GL_COLOR_ATTACHMENT0, projected[which]);
-        if (reattach || attachedDepth != target.depthTexture().id()) {
-            projectionFramebuffer.attach(GL_DEPTH_ATTACHMENT, target.depthTexture());
-            attachedDepth = target.depthTexture().id();
-        }
-        projectionFramebuffer.requireComplete("volume projection target");
-        projectionFramebuffer.bind();
-        glClearColor(clearValue, clearValue, 0.0f, 0.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-    }
-};
-
-/// One brick's textures and what the CPU knows about its voxels.
-struct BrickState {
-    Texture data, tags;
-    bool resident = false;
-    std::uint64_t lastUse = 0;
-    double dataMin = 0.0, dataMax = 0.0; ///< over the texture's voxels (non-finite replaced)
-    int tagMin = 0, tagMax = 0;
-    bool mayEmit = true; ///< under the current transfer functions
-    GLint first = 0;     ///< this frame's slice vertices
-    GLsizei count = 0;
-    GLint faceFirst = 0; ///< this frame's front faces on the volume box (sliver rays)
-    GLsizei faceCount = 0;
-    /// This frame's rows of non-empty cells (CellRows), each drawn with its own box; empty:
-    /// the whole brick is one draw.
-    std::vector<CellRow> rows;
-    std::vector<GLint> rowFirst;
-    std::vector<GLsizei> rowCount;
-};
-
-/// Per volume (node and grid): bricks, tables and geometry, kept across frames.
-struct VolumeTextures {
-    ref_ptr<const VolumeGrid> data, tags;
-    DataFormat format;
-    double finiteMin = 0.0, finiteMax = 0.0;
-    glm::dvec2 naturalRange{0.0, 1.0};
-
-    bool hasLayout = false;
-    std::uint64_t layoutBudget = 0;
-    int layoutGuard = 0;
-    BrickLayout layout;
-    std::vector<BrickState> bricks;
-    std::size_t residentBytes = 0;
-    std::uint64_t useCounter = 0;
-    bool filterNearest = false;
-
-    bool hasTable = false;
-    std::uint64_t tableKey = 0;
-    TransferTable table;
-    Texture tableTexture, tagRowTexture;
-
-    EmptyCells cells;    ///< measured on first use
-    Texture cellTexture; ///< EmptyCells::flags as R8UI, one texel per cell
-    std::uint64_t cellTableKey = 0;
-    int cellKind = -1; ///< 0 DVR, 1 MIP flags in cellTexture; -1 none yet
-    CellRows rows;     ///< the cell flags dilated by rowsReach
-    int rowsReach = -1;
-    std::uint64_t rowsTableKey = 0;
-    int rowsKind = -1;
-
-    bool hasPreIntegration = false;
-    PreIntegrationTable preIntegration;
-    Texture preIntegrationTexture;
-
-    std::vector<PiecewiseLinear::Point> planeOpacity;
-    Texture planeOpacityTexture;
-
-    Buffer vertexBuffer;
-    VertexArray vertexArray;
-    std::vector<glm::vec3> vertices;
-    ProxySlices slices;
-    std::vector<int> order;
-    std::vector<std::uint32_t> scratch; ///< converted texels of a brick (4-byte aligned)
-    /// The grid's bricks staged before it was shown (TextureStaging.h); dropped after the
-    /// first frame's uploads.
-    std::unique_ptr<StagedGrid> staged;
-    /// The previous grid's brick textures (a series' last step), refilled in place when a
-    /// brick of this grid has their size and format: on llvmpipe a new 256^3 R16 texture
-    /// costs 28 ms against 10 ms to overwrite one (its pages are fresh). Freed after the frame.
-    std::vector<Texture> spareTextures;
-
-    SlicingStats totals;
-};
-
-// ---------------------------------------------------------------------------------------------
-// Voxels of a brick
-
-/// The staged grid's measures, when they are of this grid with its labels (a grid staged
-/// without them, for an untagged table, has no tag ranges a later tagged table would need).
-const GridMeasures* stagedMeasures(const VolumeTextures& v) {
-    return v.staged && v.staged->data() == v.data.get() && v.staged->tags() == v.tags.get()
-               ? &v.staged->measures()
-               : nullptr;
-}
-
-/// Brick ranges of the layout: from the staged grid's measures when they are of this layout.
-void measureBricks(VolumeTextures& v) {
-    std::vector<BrickRange> measured;
-    if (const GridMeasures* m = stagedMeasures(v); m && m->sameBricks(v.layout))
-        measured = m->ranges;
-    else
-        measured = measureBrickRanges(*v.data, v.tags.get(), v.layout, v.finiteMin, v.finiteMax);
-    for (std::size_t i = 0; i < v.bricks.size(); ++i) {
-        BrickState& s = v.bricks[i];
-        s.dataMin = measured[i].dataMin;
-        s.dataMax = measured[i].dataMax;
-        s.tagMin = measured[i].tagMin;
-        s.tagMax = measured[i].tagMax;
-    }
-}
-
-/// A spare texture of this size and format (moved out of v.spareTextures), else a new one.
-Texture spareTexture(VolumeTextures& v, GLenum internalFormat, const glm::ivec3& size) {
-    for (auto it = v.spareTextures.begin(); it != v.spareTextures.end(); ++it)
-        if (it->internalFormat() == internalFormat && it->width() == size.x &&
-            it->height() == size.y && it->depth() == size.z) {
-            Texture t = std::move(*it);
-            v.spareTextures.erase(it);
-            return t;
-        }
-    return Texture(GL_TEXTURE_3D);
-}
-
-/// Uploads brick i's textures: from the staged buffer when the grid was staged with this
-/// brick (the same bytes, BrickTexels.h), else from the grid's memory or converted texels.
-void uploadBrick(VolumeTextures& v, std::size_t i, const Brick& b, BrickState& s, bool withTags) {
-    const VolumeGrid& grid = *v.data;
-    const bool staged = v.staged && v.staged->covers(i, b, withTags);
-    std::optional<StagedGrid::Binding> binding;
-    if (staged) binding.emplace(*v.staged); // the pointers below are offsets into the buffer
-    auto converted = [&](std::size_t texelBytes, auto write) -> const void* {
-        v.scratch.resize((b.texels() * texelBytes + 3) / 4);
-        write(static_cast<void*>(v.scratch.data()));
-        return v.scratch.data();
-    };
-    // From the buffer the source is an offset, and the first brick's is 0: a null pointer.
-    const void* pixels = staged ? v.staged->dataSource(i) : directBrickTexels(grid, b);
-    if (!staged && !pixels)
-        pixels = converted(uploadTexelBytes(grid.type()), [&](void* out) {
-            writeBrickTexels(grid, b, v.finiteMin, v.finiteMax, out);
-        });
-    if (!s.data) s.data = spareTexture(v, v.format.internalFormat, b.voxelCount);
-    if (s.data.internalFormat() == v.format.internalFormat && s.data.width() == b.voxelCount.x &&
-        s.data.height() == b.voxelCount.y && s.data.depth() == b.voxelCount.z) {
-        ++v.totals.refilledTextures;
-        s.data.subImage(0, 0, 0, b.voxelCount.x, b.voxelCount.y, b.voxelCount.z, GL_RED,
-                        v.format.type, pixels);
-    } else {
-        s.data.image3D(v.format.internalFormat, b.voxelCount.x, b.voxelCount.y, b.voxelCount.z,
-                       GL_RED, v.format.type, pixels);
-    }
-    const GLenum filter = v.filterNearest ? GL_NEAREST : GL_LINEAR;
-    s.data.setFilter(filter, filter);
-    std::size_t bytes = b.texels() * v.format.texelBytes;
-
-    if (withTags) {
-        const VolumeGrid& tags = *v.tags;
-        const bool wide = tags.type() == VoxelType::UShort;
-        const void* labels = staged ? v.staged->tagSource(i) : directBrickLabels(tags, b);
-        if (!staged && !labels)
-            labels = converted(wide ? 2 : 1, [&](void* out) { writeBrickLabels(tags, b, out); });
-        if (!s.tags) {
-            s.tags = Texture(GL_TEXTURE_3D);
-            s.tags.setFilter(GL_NEAREST, GL_NEAREST); // integer textures are never filtered
-        }
-        s.tags.image3D(wide ? GL_R16UI : GL_R8UI, b.voxelCount.x, b.voxelCount.y, b.voxelCount.z,
-                       GL_RED_INTEGER, wide ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE, labels);
-        bytes += b.texels() * (wide ? 2 : 1);
-    } else {
-        s.tags = Texture();
-    }
-    s.resident = true;
-    v.residentBytes += bytes;
-    ++v.totals.brickUploads;
-    v.totals.uploadedBytes += bytes;
-    if (staged) ++v.totals.stagedUploads;
-}
-
-std::size_t residentBytesOf(const VolumeTextures& v, const Brick& b, const BrickState& s) {
-    std::size_t bytes = b.texels() * v.format.texelBytes;
-    if (s.tags) bytes += b.texels() * (v.tags->type() == VoxelType::UShort ? 2 : 1);
-    return bytes;
-}
-
-void release(VolumeTextures& v, std::size_t i) {
-    BrickState& s = v.bricks[i];
-    if (!s.resident) return;
-    v.residentBytes -= residentBytesOf(v, v.layout.bricks()[i], s);
-    s.data = Texture();
-    s.tags = Texture();
-    s.resident = false;
-}
-
-/// Makes brick i resident, first evicting the least recently used others while the budget
-/// would be exceeded (bricks drawn earlier in this frame may go: their draws are issued). So
-/// a volume whose visible bricks exceed the budget streams them, as the seed's bricking does.
-void makeResident(VolumeTextures& v, std::size_t i, std::uint64_t budget, bool withTags) {
-    BrickState& s = v.bricks[i];
-    if (s.resident && bool(s.tags) != withTags) release(v, i);
-    if (!s.resident) {
-        activateUploadUnit();
-        const Brick& b = v.layout.bricks()[i];
-        const std::size_t need =
-            b.texels() *
-            (v.format.texelBytes + (withTags ? (v.tags->type() == VoxelType::UShort ? 2 : 1) : 0));
-        while (budget > 0 && v.residentBytes + need > budget) {
-            std::size_t victim = v.bricks.size();
-            for (std::size_t j = 0; j < v.bricks.size(); ++j)
-                if (j != i && v.bricks[j].resident &&
-                    (victim == v.bricks.size() || v.bricks[j].lastUse < v.bricks[victim].lastUse))
-                    victim = j;
-            if (victim == v.bricks.size()) break;
-            release(v, victim);
-        }
-        uploadBrick(v, i, b, s, withTags);
-    }
-    s.lastUse = ++v.useCounter;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Per-frame preparation
-
-void prepareGrid(VolumeTextures& v, const RayCastVolume& volume) {
-    if (v.data) return;
-    v.data = volume.data;
-    v.tags = volume.tags;
-    v.format = dataFormatOf(v.data->type());
-    if (const GridMeasures* m = stagedMeasures(v)) { // measured ahead, with the texels
-        v.finiteMin = m->finiteMin;
-        v.finiteMax = m->finiteMax;
-    } else {
-        std::tie(v.finiteMin, v.finiteMax) = v.data->minMax(); // finite values only
-    }
-    const auto [natLo, natHi] = v.data->naturalRange();
-    v.naturalRange = {natLo, natHi};
-}
-
-/// How a grid is split into bricks (prepareLayout, and the staging of the next grid).
-BrickLayout::Limits layoutLimits(const VolumeGrid& data, const VolumeGrid* tags,
-                                 const SliceShared& shared, std::uint64_t budget, int guard) {
-    BrickLayout::Limits limits;
-    limits.budgetBytes = budget;
-    limits.maxTextureSize = shared.max3DTextureSize;
-    limits.bytesPerVoxel = dataFormatOf(data.type()).texelBytes +
-                           (tags ? (tags->type() == VoxelType::UShort ? 2 : 1) : 0);
-    limits.guard = guard;
-    return limits;
-}
-
-void prepareLayout(VolumeTextures& v, const SliceShared& shared, std::uint64_t budget, int guard) {
-    if (v.hasLayout && v.layoutBudget == budget && v.layoutGuard == guard) return;
-    for (std::size_t i = 0; i < v.bricks.size(); ++i)
-        release(v, i);
-    v.layout = BrickLayout(v.data->dimensions(), v.data->spacing(),
-                           layoutLimits(*v.data, v.tags.get(), shared, budget, guard));
-    v.bricks.clear();
-    v.bricks.resize(v.layout.bricks().size());
-    measureBricks(v);
-    v.hasLayout = true;
-    v.layoutBudget = budget;
-    v.layoutGuard = guard;
-    v.hasTable = false; // emptiness is decided with the table
-}
-
-void prepareTable(VolumeTextures& v, const RayCastVolume& volume, std::uint64_t key) {
-    if (v.hasTable && v.tableKey == key) return;
-    v.table.build(volume.transferFunctions, v.naturalRange);
-    GLint maxSize = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-    if (v.table.rows() > maxSize)
-        throw Error(std::to_string(v.table.rows() - 1) +
-                    " tagged transfer functions apply to one volume; at most " +
-                    std::to_string(maxSize - 1) + " fit its transfer table");
-    if (!v.tableTexture) v.tableTexture = Texture(GL_TEXTURE_2D); // linear, clamped
-    v.tableTexture.image2D(GL_RGBA32F, TransferTable::kWidth, v.table.rows(), GL_RGBA, GL_FLOAT,
-                           v.table.texels().data());
-    if (v.table.rows() > 1) {
-        if (!v.tagRowTexture) {
-            v.tagRowTexture = Texture(GL_TEXTURE_2D);
-            v.tagRowTexture.setFilter(GL_NEAREST, GL_NEAREST);
-        }
-        v.tagRowTexture.image2D(GL_R16UI, TransferTable::kTagMapSide, TransferTable::kTagMapSide,
-                                GL_RED_INTEGER, GL_UNSIGNED_SHORT, v.table.tagRows().data());
-    }
-    const bool tagged = v.tags && v.table.rows() > 1;
-    for (BrickState& s : v.bricks)
-        s.mayEmit = v.table.mayEmit(s.dataMin, s.dataMax, tagged, s.tagMin, s.tagMax);
-    v.hasTable = true;
-    v.tableKey = key;
-    v.hasPreIntegration = false;
-    ++v.totals.transferTableBuilds;
-}
-
-/// The empty-cell flags for this table and kind (DVR: may emit; MIP: may be a shown maximum),
-/// measured on first use and uploaded when the table or the kind changes.
-void prepareCells(VolumeTextures& v, int kind) {
-    if (!v.cells.measured()) {
-        if (const GridMeasures* m = stagedMeasures(v); m && m->cells.measured())
-            v.cells = m->cells;
-        else
-            v.cells.measure(*v.data, v.tags.get(), v.finiteMin, v.finiteMax);
-    }
-    if (v.cellKind == kind && v.cellTableKey == v.tableKey) return;
-    const bool tagged = v.tags && v.table.rows() > 1;
-    v.cells.classify(v.table, tagged, kind == 1);
-    if (!v.cellTexture) {
-        v.cellTexture = Texture(GL_TEXTURE_3D);
-        v.cellTexture.setFilter(GL_NEAREST, GL_NEAREST);
-    }
-    const glm::ivec3 n = v.cells.cells();
-    v.cellTexture.image3D(GL_R8UI, n.x, n.y, n.z, GL_RED_INTEGER, GL_UNSIGNED_BYTE,
-                          v.cells.flags().data());
-    v.cellKind = kind;
-    v.cellTableKey = v.tableKey;
-}
-
-void preparePreIntegration(VolumeTextures& v) {
-    if (v.hasPreIntegration) return;
-    v.preIntegration.build(v.table.function(0));
-    if (!v.preIntegrationTexture) v.preIntegrationTexture = Texture(GL_TEXTURE_2D);
-    v.preIntegrationTexture.image2D(GL_RGBA32F, PreIntegrationTable::kSize,
-                                    PreIntegrationTable::kSize, GL_RGBA, GL_FLOAT,
-                                    v.preIntegration.texels().data());
-    v.hasPreIntegration = true;
-    ++v.totals.preIntegrationBuilds;
-}
-
-/// Whether planeOpacity changes anything: m = 1 everywhere needs no lookup.
-bool planeOpacityMatters(const std::vector<PiecewiseLinear::Point>& points) {
-    return std::any_of(points.begin(), points.end(),
-                       [](const PiecewiseLinear::Point& p) { return p.y != 1.0; });
-}
-
-void preparePlaneOpacity(VolumeTextures& v, const std::vector<PiecewiseLinear::Point>& points) {
-    if (v.planeOpacityTexture && v.planeOpacity == points) return;
-    const PiecewiseLinear m(points);
-    std::vector<float> samples(kPlaneOpacitySize);
-    for (int i = 0; i < kPlaneOpacitySize; ++i)
-        samples[std::size_t(i)] = float(std::max(0.0, m(double(i) / (kPlaneOpacitySize - 1))));
-    if (!v.planeOpacityTexture) {
-        v.planeOpacityTexture = Texture(GL_TEXTURE_1D);
-        v.planeOpacityTexture.setFilter(GL_NEAREST, GL_NEAREST);
-    }
-    v.planeOpacityTexture.image1D(GL_R32F, kPlaneOpacitySize, GL_RED, GL_FLOAT, samples.data());
-    v.planeOpacity = points;
-}
-
-/// Eye depths of the camera's near and far planes, from the projection matrix.
-glm::dvec2 nearFar(const glm::dmat4& p, bool orthographic) {
-    if (orthographic) return {(p[3][2] + 1.0) / p[2][2], (p[3][2] - 1.0) / p[2][2]};
-    return {p[3][2] / (p[2][2] - 1.0), p[3][2] / (p[2][2] + 1.0)};
-}
-
-/// The faces of brick b that lie on the volume box and face the viewer (at `viewer`, or
-/// looking along it when orthographic; local coordinates), as triangles.
-void appendFrontFaces(const Brick& b, const glm::ivec3& grid, const glm::dvec3& viewer,
-                      bool orthographic, std::vector<glm::vec3>& out) {
-    for (int a = 0; a < 3; ++a)
-        for (int side = 0; side < 2; ++side) {
-            const bool onBoundary = side == 0 ? b.index[a] == 0 : b.index[a] == grid[a] - 1;
-            if (!onBoundary) continue;
-            const double c = side == 0 ? b.boxMin[a] : b.boxMax[a];
-            const bool facing = orthographic ? (side == 0 ? viewer[a] > 0.0 : viewer[a] < 0.0)
-                                             : (side == 0 ? viewer[a] < c : viewer[a] > c);
-            if (!facing) continue;
-            const int u = (a + 1) % 3, w = (a + 2) % 3;
-            glm::vec3 corner[4];
-            for (int k = 0; k < 4; ++k) {
-                glm::dvec3 p;
-                p[a] = c;
-                p[u] = (k == 1 || k == 2) ? b.boxMax[u] : b.boxMin[u];
-                p[w] = k >= 2 ? b.boxMax[w] : b.boxMin[w];
-                corner[k] = glm::vec3(p);
-            }
-            for (const int k : {0, 1, 2, 0, 2, 3})
-                out.push_back(corner[k]);
-        }
-}
 
 void checkVolume(const RayCastVolume& volume) {
     if (!volume.data) throw Error("Volume: no data to render");
@@ -589,428 +31,59 @@ void checkVolume(const RayCastVolume& volume) {
     }
 }
 
-} // namespace
-
-void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastVolume& volume,
-                        std::span<const SceneLight> lights, const SlicingSettings& settings,
-                        SlicingStats& stats) {
-    if (frame.pass != RenderPass::Volume) return;
-    const std::uint64_t transferKey = volume.transferKey;
-    const auto started = std::chrono::steady_clock::now();
-    checkVolume(volume);
-    const VolumeGrid& grid = *volume.data;
-    const Mode mode = modeOf(volume.mode);
-
-    activateUploadUnit();
-    SliceShared& shared = frame.cache.shared<SliceShared>();
-    if (shared.driverMax3DTextureSize == 0)
-        glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &shared.driverMax3DTextureSize);
-    // RenderDebug can lower the limit, to test bricking as a smaller GL would need it.
-    shared.max3DTextureSize = shared.driverMax3DTextureSize;
-    if (frame.debug.max3DTextureSize > 0)
-        shared.max3DTextureSize = std::min(shared.max3DTextureSize, frame.debug.max3DTextureSize);
-    shared.max3DTextureSize = std::max(shared.max3DTextureSize, 2);
-    // Keyed by the grids too: new data (a VolumeData reload) starts a fresh cache and the old
-    // one is dropped after this frame.
-    const std::uint64_t key =
-        std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())) ^
-        (std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.tags.get())) << 1);
-    VolumeTextures& v = frame.cache.get<VolumeTextures>(owner, key);
-    TextureStaging& staging = frame.cache.get<TextureStaging>(owner);
-    if (!v.data && staging.next && staging.next->data() == volume.data.get() &&
-        (!staging.next->tags() || staging.next->tags() == volume.tags.get()))
-        v.staged = std::move(staging.next); // staged while the previous step was shown
-    if (v.staged) {
-        try {
-            v.staged->finish();
-        } catch (const Error&) {
-            v.staged.reset(); // the buffer was lost: upload directly
-        }
-    }
-    if (!v.data && staging.lastKey != 0 && staging.lastKey != key) {
-        // A new grid for this node (a series step): the last grid's textures are refilled
-        // instead of allocated anew. Its entry is dropped after this frame anyway.
-        VolumeTextures& last = frame.cache.get<VolumeTextures>(owner, staging.lastKey);
-        for (BrickState& s : last.bricks)
-            if (s.data) v.spareTextures.push_back(std::move(s.data));
-        last.bricks.clear();
-        last.residentBytes = 0;
-    }
-    staging.lastKey = key;
-    prepareGrid(v, volume);
-
-    const bool lighting = settings.lighting && mode == kDvr;
+/// Decides how this frame draws the volume and brings the volume's bricks and tables up to
+/// date for that; records the layout in `staging` for a grid staged next.
+SliceMethod prepareVolume(VolumeTextures& v, const SliceShared& shared, TextureStaging& staging,
+                          const RayCastVolume& volume, const SlicingSettings& settings) {
+    SliceMethod m;
+    m.mode = modeOf(volume.mode);
+    m.lighting = settings.lighting && m.mode == kDvr;
     // Lighting, pre-integration and tag-cell splitting sample up to a voxel (or half a slab)
     // beyond the point drawn: bricks then carry a guard voxel, so seams stay invisible.
-    const bool sampleAround = lighting || settings.preIntegrated || volume.tags;
+    const bool sampleAround = m.lighting || settings.preIntegrated || volume.tags;
     prepareLayout(v, shared, settings.textureBudget, sampleAround ? 1 : 0);
-    prepareTable(v, volume, transferKey);
-    const bool tagged = v.tags && v.table.rows() > 1;
+    prepareTable(v, volume, volume.transferKey);
+    m.tagged = v.tags && v.table.rows() > 1;
     staging.hasFrame = true; // a grid staged next is laid out as this one
     staging.textureBudget = settings.textureBudget;
     staging.guard = sampleAround ? 1 : 0;
-    staging.tagged = tagged;
-    const bool preIntegrated = settings.preIntegrated && mode == kDvr && !tagged;
-    if (preIntegrated) preparePreIntegration(v);
+    staging.tagged = m.tagged;
+    m.preIntegrated = settings.preIntegrated && m.mode == kDvr && !m.tagged;
+    if (m.preIntegrated) preparePreIntegration(v);
     // Empty cells are skipped (rows left out of the geometry, one-sample fragments discarded)
     // where that is exact: DVR samples each part at one point (not pre-integrated, not split at
     // tag cells); MIP of one row (tags would let a skipped sample's row matter). MINIP and
     // AVERAGE see every sample.
-    const bool skipCells =
-        settings.skipEmptyCells &&
-        ((mode == kDvr && !tagged && !preIntegrated) || (mode == kMip && !tagged));
-    if (skipCells) prepareCells(v, mode == kMip ? 1 : 0);
-    const bool hasPlaneOpacity = mode == kDvr && planeOpacityMatters(volume.planeOpacity);
-    if (hasPlaneOpacity) preparePlaneOpacity(v, volume.planeOpacity);
-    if (v.filterNearest != settings.nearest) {
-        v.filterNearest = settings.nearest;
-        const GLenum filter = v.filterNearest ? GL_NEAREST : GL_LINEAR;
-        for (BrickState& s : v.bricks)
-            if (s.resident) s.data.setFilter(filter, filter);
-    }
+    m.skipCells = settings.skipEmptyCells && ((m.mode == kDvr && !m.tagged && !m.preIntegrated) ||
+                                              (m.mode == kMip && !m.tagged));
+    if (m.skipCells) prepareCells(v, m.mode == kMip ? 1 : 0);
+    m.hasPlaneOpacity = m.mode == kDvr && planeOpacityMatters(volume.planeOpacity);
+    if (m.hasPlaneOpacity) preparePlaneOpacity(v, volume.planeOpacity);
+    prepareFilter(v, settings.nearest);
+    m.slabSamples = m.mode != kAverage ? std::clamp(settings.samplesPerPlane, 1, 256) : 1;
+    // The lean program when every sample of a slab counts alike (several of them, no tags, no
+    // BoxClip; DVR without planeOpacity, lighting or pre-integration; MIP/MINIP without the
+    // voxel-centre crossings).
+    m.lean = m.slabSamples > 1 && !m.tagged && !volume.boxClip &&
+             (m.mode == kDvr ? !m.lighting && !m.preIntegrated && !m.hasPlaneOpacity
+                             : (m.mode == kMip || m.mode == kMinip) && !settings.mipPeaks);
+    return m;
+}
 
-    // The view in the volume's local coordinates.
-    const RenderView& view = frame.view;
-    const glm::dmat4 model = volume.model;
-    const glm::dmat4 modelView = view.view * model;
-    const glm::dmat4 eyeToLocal = glm::inverse(modelView);
-    const glm::dmat3 eyeToLocal3(eyeToLocal);
-    const glm::dvec3 halfExtent = 0.5 * grid.extent();
-    const glm::dvec2 boxDepth = ProxyPlaneCutter::depthRange(-halfExtent, halfExtent, modelView);
-    const glm::dvec2 clipDepth = nearFar(view.projection, view.orthographic);
-    const double L0 = grid.smallestSpacing();
-
-    // Plane count: numPlanes, or 2 per voxel (spacing L0 / 2 in local units along the view
-    // axis); a quarter while interacting. Opacity correction makes both the same image.
-    const double localPerEyeAxis = glm::length(eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0));
-    const double depthExtent = boxDepth.y - boxDepth.x;
-    const double autoSpacing = 0.5 * L0 / localPerEyeAxis;
-    const int slabSamples = mode != kAverage ? std::clamp(settings.samplesPerPlane, 1, 256) : 1;
-    long still = settings.numPlanes > 0
-                     ? long(settings.numPlanes)
-                     : long(std::ceil(depthExtent / (autoSpacing * double(slabSamples))));
-    still = std::clamp(still, 1L, long(kMaxPlanes));
-    long planes = still;
-    if (frame.interactive) {
-        planes = settings.interactivePlanes > 0 ? long(settings.interactivePlanes)
-                                                : std::max(1L, (still + 3) / 4);
-        // The viewer lowers this further when interactive frames are too slow, but not below
-        // kMinScaledPlanes: with two or three planes the slab boundaries show as seams.
-        planes = std::max(long(std::ceil(double(planes) * frame.interactivePlaneScale)),
-                          std::min(planes, kMinScaledPlanes));
-    }
-    planes = std::clamp(planes, 1L, long(kMaxPlanes));
-    const PlaneLayout layout =
-        PlaneLayout::over(boxDepth, std::max(depthExtent, 1e-12) / double(planes) * (1.0 + 1e-9));
-
+/// The last-frame counters known before anything is cut.
+SlicingStats layoutStats(const VolumeTextures& v, const SlicePlan& plan) {
     SlicingStats drawn;
     drawn.bricksTotal = int(v.bricks.size());
     drawn.brickGrid = v.layout.grid();
     drawn.brickTexels = v.layout.largestTexture();
-    drawn.planes = layout.count;
-    drawn.planeSpacing = layout.spacing;
-    drawn.emptyCells = skipCells ? v.cells.emptyFraction() : 0.0;
+    drawn.planes = plan.layout.count;
+    drawn.planeSpacing = plan.layout.spacing;
+    drawn.emptyCells = plan.method.skipCells ? v.cells.emptyFraction() : 0.0;
+    return drawn;
+}
 
-    // The clip planes in local coordinates.
-    if (volume.clipPlanes.size() > std::size_t(kMaxClipPlanes))
-        throw Error(std::to_string(volume.clipPlanes.size()) +
-                    " ClipPlanes are in scope of a Volume; it clips with at most " +
-                    std::to_string(kMaxClipPlanes));
-    std::vector<glm::dvec4> localPlanes;
-    localPlanes.reserve(volume.clipPlanes.size());
-    for (const glm::dvec4& w : volume.clipPlanes) {
-        // n_w . (M p) >= d_w  <=>  (M^T n_w) . p >= d_w - n_w . t
-        const glm::dvec3 n(w);
-        const glm::dvec3 local = glm::transpose(glm::dmat3(model)) * n;
-        localPlanes.emplace_back(local, w.w - glm::dot(n, glm::dvec3(model[3])));
-    }
-
-    // Cut the bricks that can contribute, back to front.
-    const glm::dvec3 viewer = view.orthographic
-                                  ? eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0)
-                                  : glm::dvec3(eyeToLocal * glm::dvec4(0.0, 0.0, 0.0, 1.0));
-    v.layout.backToFront(viewer, view.orthographic, v.order);
-    const glm::dvec3 margin(0.5 * L0); // see uOwnMin in the shader
-    // Empty space out of the geometry: rows of cells that may emit, grown by how far from a
-    // fragment's point its samples reach (none with one sample at the point; half a slab,
-    // along the longest ray of the view, with several parts or MIP's crossings).
-    int rowReach = -1; // -1: whole bricks
-    if (skipCells && settings.skipEmptyCells) {
-        const bool onePoint = slabSamples == 1 && (mode == kDvr || !settings.mipPeaks);
-        double cosMin = 1.0;
-        if (!onePoint && !view.orthographic)
-            for (int c = 0; c < 8; ++c) {
-                const glm::dvec3 corner((c & 1) ? halfExtent.x : -halfExtent.x,
-                                        (c & 2) ? halfExtent.y : -halfExtent.y,
-                                        (c & 4) ? halfExtent.z : -halfExtent.z);
-                const glm::dvec3 eye = glm::dvec3(modelView * glm::dvec4(corner, 1.0));
-                cosMin = std::min(cosMin, -eye.z / std::max(glm::length(eye), 1e-300));
-            }
-        if (onePoint) {
-            rowReach = 0;
-        } else if (cosMin > 0.25) { // else (a wide view from close by) slabs reach too far
-            double localPerEye = 0.0;
-            for (int a = 0; a < 3; ++a)
-                localPerEye = std::max(localPerEye, glm::length(eyeToLocal3[a]));
-            const double halfSlabVoxels = 0.5 * layout.spacing / cosMin * localPerEye / L0;
-            rowReach = int(std::ceil(halfSlabVoxels / EmptyCells::kCellSize));
-        }
-        if (rowReach >= 0 && (v.rowsReach != rowReach || v.rowsKind != v.cellKind ||
-                              v.rowsTableKey != v.cellTableKey)) {
-            v.rows.dilate(v.cells, rowReach);
-            v.rowsReach = rowReach;
-            v.rowsKind = v.cellKind;
-            v.rowsTableKey = v.cellTableKey;
-        }
-    }
-    const glm::dvec3 towardsVolume = view.orthographic ? viewer : -viewer; // the box is centred
-    const int rowAxis = CellRows::axisFor(towardsVolume);
-    // Each row costs a plane cut per plane and a draw: with many planes the rows grow (group x
-    // group cells across) until planes x rows is at most kRowCutBudget, which keeps the
-    // frame's CPU work under about a millisecond.
-    int rowGroup = 1;
-    if (rowReach >= 0) {
-        const glm::ivec3 n = v.cells.cells();
-        const int ns = n[(rowAxis + 1) % 3], nt = n[(rowAxis + 2) % 3];
-        auto rowsAcross = [&](int g) {
-            return double((ns + g - 1) / g) * double((nt + g - 1) / g);
-        };
-        while (double(layout.count) * rowsAcross(rowGroup) > kRowCutBudget && rowGroup < 64)
-            rowGroup *= 2;
-    }
-    drawn.cellRowGroup = rowGroup;
-    v.vertices.clear();
-    for (const int i : v.order) {
-        BrickState& s = v.bricks[std::size_t(i)];
-        s.count = 0;
-        s.faceCount = 0;
-        s.rows.clear();
-        s.rowFirst.clear();
-        s.rowCount.clear();
-        if (mode == kDvr && !s.mayEmit) {
-            ++drawn.bricksSkipped;
-            continue;
-        }
-        const Brick& b = v.layout.bricks()[std::size_t(i)];
-        s.first = GLint(v.vertices.size());
-        if (rowReach >= 0) {
-            v.rows.rowsOf(b, rowAxis, grid.spacing(), halfExtent, viewer, view.orthographic,
-                          rowGroup, s.rows);
-            for (const CellRow& row : s.rows) {
-                ProxyPlaneCutter::cutInto(row.boxMin - margin, row.boxMax + margin, modelView,
-                                          layout, clipDepth.x, v.slices);
-                s.rowFirst.push_back(GLint(v.vertices.size()));
-                s.rowCount.push_back(GLsizei(v.slices.vertices.size()));
-                v.vertices.insert(v.vertices.end(), v.slices.vertices.begin(),
-                                  v.slices.vertices.end());
-            }
-            drawn.cellRows += int(s.rows.size());
-        } else {
-            ProxyPlaneCutter::cutInto(b.boxMin - margin, b.boxMax + margin, modelView, layout,
-                                      clipDepth.x, v.slices);
-            v.vertices.insert(v.vertices.end(), v.slices.vertices.begin(), v.slices.vertices.end());
-        }
-        s.count = GLsizei(v.vertices.size()) - s.first;
-        drawn.sliceTriangles += std::size_t(s.count) / 3;
-        s.faceFirst = GLint(v.vertices.size());
-        appendFrontFaces(b, v.layout.grid(), viewer, view.orthographic, v.vertices);
-        // Clip planes that rays cross into the kept side bound the visible part too.
-        for (const glm::dvec4& plane : localPlanes) {
-            const glm::dvec3 n(plane);
-            const bool entering =
-                view.orthographic ? glm::dot(n, viewer) > 0.0 : glm::dot(n, viewer) < plane.w;
-            if (entering)
-                ProxyPlaneCutter::appendPlanePolygon(b.boxMin, b.boxMax, n, plane.w, v.vertices);
-        }
-        s.faceCount = GLsizei(v.vertices.size()) - s.faceFirst;
-    }
-
-    const auto prepared = std::chrono::steady_clock::now();
-    drawn.cpuMilliseconds = std::chrono::duration<double, std::milli>(prepared - started).count();
-    if (!v.vertices.empty()) {
-        if (!v.vertexBuffer) {
-            v.vertexBuffer = Buffer(GL_ARRAY_BUFFER);
-            v.vertexArray = VertexArray::create();
-            v.vertexArray.setAttribute(0, v.vertexBuffer, 3);
-        }
-        v.vertexBuffer.setData(v.vertices, GL_STREAM_DRAW);
-
-        // Uniforms of this volume and frame.
-        // The lean program when every sample of a slab counts alike (several of them, no
-        // tags, no BoxClip; DVR without planeOpacity, lighting or pre-integration; MIP/MINIP
-        // without the voxel-centre crossings).
-        const bool lean = slabSamples > 1 && !tagged && !volume.boxClip &&
-                          (mode == kDvr ? !lighting && !preIntegrated && !hasPlaneOpacity
-                                        : (mode == kMip || mode == kMinip) && !settings.mipPeaks);
-        const Program& program = shared.sliceProgram(mode, tagged, lighting, preIntegrated, lean);
-        program.use();
-        program.set("uModelView", glm::mat4(modelView));
-        program.set("uProjection", glm::mat4(view.projection));
-        program.set("uHalfExtent", glm::vec3(halfExtent));
-        program.set("uInvSpacing", glm::vec3(1.0 / grid.spacing()));
-        program.set("uVoxelCount", glm::vec3(grid.dimensions()));
-        program.set("uDataScale", v.format.scale);
-        program.set("uDataOffset", v.format.offset);
-        program.set("uEyeLocal", glm::vec3(eyeToLocal * glm::dvec4(0.0, 0.0, 0.0, 1.0)));
-        program.set("uViewDirLocal",
-                    glm::vec3(glm::normalize(eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0))));
-        // Eye depth is -z in eye coordinates: an affine function of the local point.
-        program.set("uDepthPlane", glm::vec4(-modelView[0][2], -modelView[1][2], -modelView[2][2],
-                                             -modelView[3][2]));
-        program.set("uOrthographic", view.orthographic ? 1 : 0);
-        program.set("uPlaneSpacing", float(layout.spacing));
-        program.set("uSlabSamples", slabSamples);
-        program.set("uMipPeaks", settings.mipPeaks ? 1 : 0);
-        program.set("uRefinePeaks", settings.refinePeaks ? 1 : 0);
-        program.set("uSkipCells", skipCells ? 1 : 0);
-        if (skipCells) {
-            program.set("uCellScale", 1.0f / float(EmptyCells::kCellSize));
-            v.cellTexture.bind(kCellsUnit);
-        }
-        program.set("uLayoutNear", float(layout.nearDepth));
-        program.set("uFacePass", 0);
-        program.set("uInvL0", float(1.0 / L0));
-        program.set("uNear", float(clipDepth.x));
-        program.set("uFar", float(clipDepth.y));
-        program.set("uHasPlaneOpacity", hasPlaneOpacity ? 1 : 0);
-        program.set("uBoxNear", float(boxDepth.x));
-        program.set("uBoxFar", float(std::max(boxDepth.y, boxDepth.x + 1e-12)));
-
-        program.set("uClipPlaneCount", int(localPlanes.size()));
-        if (!localPlanes.empty()) {
-            std::vector<glm::vec4> planes(localPlanes.begin(), localPlanes.end());
-            program.set("uClipPlanes", planes.data(), int(planes.size()));
-        }
-
-        glm::vec2 regionOpacity(1.0f), regionWeight(0.0f);
-        glm::vec3 regionColor[2] = {glm::vec3(1.0f), glm::vec3(1.0f)};
-        program.set("uHasBoxClip", volume.boxClip ? 1 : 0);
-        if (volume.boxClip) {
-            const RayCastBoxClip& b = *volume.boxClip;
-            const glm::dmat4 localToBox =
-                b.model ? glm::inverse(*b.model) * model : glm::dmat4(1.0);
-            program.set("uLocalToBox", glm::mat4(localToBox));
-            program.set("uBoxMin", glm::vec3(glm::min(b.origin, b.origin + b.extent)));
-            program.set("uBoxMax", glm::vec3(glm::max(b.origin, b.origin + b.extent)));
-            regionOpacity = {float(std::max(0.0, b.outsideOpacity)),
-                             float(std::max(0.0, b.insideOpacity))};
-            regionWeight = {float(std::clamp(b.outsideColorWeight, 0.0, 1.0)),
-                            float(std::clamp(b.insideColorWeight, 0.0, 1.0))};
-            regionColor[0] = glm::vec3(b.outsideColor);
-            regionColor[1] = glm::vec3(b.insideColor);
-        }
-        program.set("uRegionOpacity", regionOpacity);
-        program.set("uRegionWeight", regionWeight);
-        program.set("uRegionColor", regionColor, 2);
-
-        // MIP/MINIP: the key's low bits carry row * 2 + region.
-        int infoBits = 0;
-        if (tagged || volume.boxClip)
-            while ((1 << infoBits) < 2 * v.table.rows())
-                ++infoBits;
-        const GLuint infoMask = (1u << infoBits) - 1u;
-        glUniform1ui(program.uniformLocation("uInfoMask"), infoMask);
-
-        if (lighting) {
-            if (lights.size() > std::size_t(kMaxLights))
-                throw Error(std::to_string(lights.size()) +
-                            " lights are in scope of a Volume; at most " +
-                            std::to_string(kMaxLights) + " light it");
-            std::vector<glm::vec4> vectors;
-            std::vector<glm::vec3> colors;
-            for (const SceneLight& l : lights) {
-                vectors.push_back(l.vector);
-                colors.push_back(l.color);
-            }
-            program.set("uModel", glm::mat4(model));
-            program.set("uNormalMatrix",
-                        glm::mat3(glm::transpose(glm::inverse(glm::dmat3(model)))));
-            program.set("uViewer", glm::vec4(view.viewer));
-            program.set("uLightCount", int(lights.size()));
-            if (!lights.empty()) {
-                program.set("uLightVector", vectors.data(), int(vectors.size()));
-                program.set("uLightColor", colors.data(), int(colors.size()));
-            }
-            program.set("uAmbient", kAmbientIntensity);
-            program.set("uSpecular", settings.specular);
-            program.set("uShininess", settings.shininess * 128.0f);
-        }
-
-        // Opaque geometry (drawn by the shape renderer in the opaque pass) ends rays: the
-        // slices read a copy of its depth. Without any, the copy and the reads are skipped.
-        const bool hasOpaque = frame.shapes.drawsLastFrame() > 0;
-        program.set("uHasOpaqueDepth", hasOpaque ? 1 : 0);
-        if (hasOpaque) {
-            shared.copyOpaqueDepth(frame.target);
-            shared.opaqueDepth.bind(kOpaqueDepthUnit);
-        }
-        v.tableTexture.bind(kTableUnit);
-        if (tagged) v.tagRowTexture.bind(kTagRowUnit);
-        if (preIntegrated) v.preIntegrationTexture.bind(kPreIntegratedUnit);
-        if (hasPlaneOpacity) v.planeOpacityTexture.bind(kPlaneOpacityUnit);
-
-        // Projection modes gather into their own target, then composite once.
-        if (mode == kMip || mode == kMinip) {
-            shared.beginProjection(frame.target, 0, mode == kMip ? 0.0f : 4.0f);
-            glBlendEquation(mode == kMip ? GL_MAX : GL_MIN);
-        } else if (mode == kAverage) {
-            shared.beginProjection(frame.target, 1, 0.0f);
-            glBlendFunc(GL_ONE, GL_ONE);
-        }
-
-        v.vertexArray.bind();
-        for (const int i : v.order) {
-            BrickState& s = v.bricks[std::size_t(i)];
-            if (s.count == 0 && s.faceCount == 0) continue;
-            makeResident(v, std::size_t(i), settings.textureBudget, tagged);
-            const Brick& b = v.layout.bricks()[std::size_t(i)];
-            s.data.bind(kDataUnit);
-            if (tagged) s.tags.bind(kTagUnit);
-            program.set("uTexOrigin", glm::vec3(b.firstVoxel));
-            program.set("uTexSize", glm::vec3(b.voxelCount));
-            if (s.rows.empty()) {
-                program.set("uOwnMin", glm::vec3(b.boxMin));
-                program.set("uOwnMax", glm::vec3(b.boxMax));
-                glDrawArrays(GL_TRIANGLES, s.first, s.count);
-            } else {
-                for (std::size_t r = 0; r < s.rows.size(); ++r) {
-                    if (s.rowCount[r] == 0) continue;
-                    program.set("uOwnMin", glm::vec3(s.rows[r].boxMin));
-                    program.set("uOwnMax", glm::vec3(s.rows[r].boxMax));
-                    glDrawArrays(GL_TRIANGLES, s.rowFirst[r], s.rowCount[r]);
-                }
-                program.set("uOwnMin", glm::vec3(b.boxMin)); // the faces: the whole brick
-                program.set("uOwnMax", glm::vec3(b.boxMax));
-            }
-            if (s.faceCount > 0) {
-                // No ray has both plane and face fragments, so this order is as good as any.
-                program.set("uFacePass", 1);
-                glDrawArrays(GL_TRIANGLES, s.faceFirst, s.faceCount);
-                program.set("uFacePass", 0);
-            }
-            ++drawn.bricksDrawn;
-        }
-
-        if (mode != kDvr) {
-            frame.target.bind();
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-            const Program& composite = shared.compositeProgram(mode);
-            composite.use();
-            glUniform1ui(composite.uniformLocation("uInfoMask"), infoMask);
-            composite.set("uRegionColor", regionColor, 2);
-            composite.set("uRegionWeight", regionWeight);
-            shared.projected[mode == kAverage ? 1 : 0].bind(kProjectedUnit);
-            if (!shared.emptyVertexArray) shared.emptyVertexArray = VertexArray::create();
-            shared.emptyVertexArray.bind();
-            glDisable(GL_DEPTH_TEST);
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            glEnable(GL_DEPTH_TEST);
-        }
-        VertexArray::unbind();
-        glActiveTexture(GL_TEXTURE0);
-    }
-
+/// After the draws: drops what only this grid's first frame needed, and counts.
+void finishFrame(VolumeTextures& v, SlicingStats& drawn) {
     v.staged.reset(); // its bricks are uploaded; skipped (empty) ones upload directly later
     v.spareTextures.clear();
     for (const BrickState& s : v.bricks)
@@ -1024,9 +97,42 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     drawn.preIntegrationBuilds = v.totals.preIntegrationBuilds;
     drawn.stagedUploads = v.totals.stagedUploads;
     drawn.refilledTextures = v.totals.refilledTextures;
-    drawn.submitMilliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - prepared)
-            .count();
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+} // namespace
+
+void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastVolume& volume,
+                        std::span<const SceneLight> lights, const SlicingSettings& settings,
+                        SlicingStats& stats) {
+    if (frame.pass != RenderPass::Volume) return;
+    const auto started = std::chrono::steady_clock::now();
+    checkVolume(volume);
+    SliceShared& shared = sliceSharedOf(frame);
+    const std::uint64_t key = textureKeyOf(volume);
+    VolumeTextures& v = frame.cache.get<VolumeTextures>(owner, key);
+    TextureStaging& staging = frame.cache.get<TextureStaging>(owner);
+    adoptGrid(frame.cache, owner, key, v, staging, volume);
+    prepareGrid(v, volume);
+
+    SlicePlan plan;
+    plan.method = prepareVolume(v, shared, staging, volume, settings);
+    plan.local = localView(frame.view, volume.model, *volume.data);
+    plan.layout = planeLayout(plan.local, settings, plan.method.slabSamples, frame);
+    SlicingStats drawn = layoutStats(v, plan);
+    plan.clipPlanes = localClipPlanes(volume);
+    plan.rows = planRows(v, plan, settings);
+    cutBricks(v, *volume.data, plan, drawn);
+
+    const auto prepared = std::chrono::steady_clock::now();
+    drawn.cpuMilliseconds = std::chrono::duration<double, std::milli>(prepared - started).count();
+    if (!v.vertices.empty()) drawSlices(frame, shared, v, volume, lights, settings, plan, drawn);
+    finishFrame(v, drawn);
+    drawn.submitMilliseconds = millisecondsSince(prepared);
     stats = drawn;
 }
 

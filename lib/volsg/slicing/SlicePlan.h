@@ -1,0 +1,57 @@
+#pragma once
+// The plain data one frame of the Volume slicer hands from stage to stage.
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <volsg/slicing/ProxyPlaneCutter.h>
+#include <volsg/slicing/SliceShared.h>
+
+namespace volsg::slicing {
+
+/// How this frame draws the volume: decided from its mode, the settings and the volume, and
+/// what the volume's textures were prepared for.
+struct SliceMethod {
+    Mode mode = kDvr;
+    bool lighting = false;        ///< DVR with SlicingSettings::lighting
+    bool tagged = false;          ///< label textures and a row per tagged transfer function
+    bool preIntegrated = false;   ///< DVR without tagged functions, SlicingSettings::preIntegrated
+    bool skipCells = false;       ///< empty cells left out (where that is exact)
+    bool hasPlaneOpacity = false; ///< DVR with a planeOpacity that is not 1 everywhere
+    int slabSamples = 1;          ///< samples along a ray in each plane's slab
+    bool lean = false;            ///< the lean program: every sample of a slab counts alike
+};
+
+/// The view in the volume's local coordinates (the volume box is [-halfExtent, halfExtent]).
+struct LocalView {
+    glm::dmat4 model{1.0};
+    glm::dmat4 modelView{1.0};
+    glm::dmat4 eyeToLocal{1.0};
+    glm::dmat3 eyeToLocal3{1.0};
+    glm::dvec3 halfExtent{0.0};
+    glm::dvec2 boxDepth{0.0};  ///< eye depths of the box's nearest and farthest corners
+    glm::dvec2 clipDepth{0.0}; ///< eye depths of the camera's near and far planes
+    double L0 = 1.0;           ///< the grid's smallest spacing
+    /// The eye (perspective) or the viewing direction (orthographic), local coordinates.
+    glm::dvec3 viewer{0.0};
+    bool orthographic = false;
+};
+
+/// How the bricks are cut into rows of empty-space cells (CellRows).
+struct RowPlan {
+    int reach = -1; ///< how far (cells) a fragment's samples reach; -1: whole bricks, no rows
+    int axis = 0;   ///< the axis rows run along
+    int group = 1;  ///< cells across a row, each way
+};
+
+/// One frame's plan, filled stage by stage before anything is drawn.
+struct SlicePlan {
+    SliceMethod method;
+    LocalView local;
+    PlaneLayout layout;
+    std::vector<glm::dvec4> clipPlanes; ///< the clip planes in local coordinates (n, d)
+    RowPlan rows;
+};
+
+} // namespace volsg::slicing
