@@ -14,6 +14,8 @@
 #include <volsg/nodes/Group.h>
 #include <volsg/nodes/IndexedFaceSet.h>
 #include <volsg/nodes/IndexedLineSet.h>
+#include <volsg/nodes/Info.h>
+#include <volsg/nodes/Label.h>
 #include <volsg/nodes/Light.h>
 #include <volsg/nodes/LightModel.h>
 #include <volsg/nodes/Material.h>
@@ -22,12 +24,18 @@
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
 #include <volsg/nodes/ResetTransform.h>
+#include <volsg/nodes/Rotation.h>
+#include <volsg/nodes/RotationXYZ.h>
+#include <volsg/nodes/Scale.h>
 #include <volsg/nodes/Separator.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Switch.h>
 #include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/Transform.h>
+#include <volsg/nodes/TransformSeparator.h>
+#include <volsg/nodes/Translation.h>
+#include <volsg/nodes/Units.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeObject.h>
@@ -69,6 +77,14 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(ResetTransform::classType());
     r.add(OrthoSlice::classType());
     r.add(ObliqueSlice::classType());
+    r.add(Translation::classType());
+    r.add(RotationNode::classType());
+    r.add(RotationXYZ::classType());
+    r.add(Scale::classType());
+    r.add(TransformSeparator::classType());
+    r.add(Units::classType());
+    r.add(Info::classType());
+    r.add(Label::classType());
 }
 
 } // namespace
