@@ -12,6 +12,7 @@
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
+#include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/Shape.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/sections/SliceSampler.h>
@@ -21,8 +22,48 @@ namespace volsg {
 
 namespace {
 
+/// PickStyle BOUNDING_BOX: the ray against a local box, hit where it enters the box (where it
+/// leaves it when it starts inside), with the normal of that face.
+void pickLocalBox(PickAction& action, const Box3& box) {
+    if (box.isEmpty()) return;
+    const glm::dmat4& model = action.state().modelMatrix();
+    const double det = glm::determinant(model);
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return; // flattened: nothing to hit
+    const Ray local = action.worldRay().transformed(glm::inverse(model));
+    double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+    int axis0 = -1, axis1 = -1;
+    for (int a = 0; a < 3; ++a) {
+        if (local.direction[a] == 0.0) {
+            if (local.origin[a] < box.min[a] || local.origin[a] > box.max[a]) return;
+            continue;
+        }
+        double near = (box.min[a] - local.origin[a]) / local.direction[a];
+        double far = (box.max[a] - local.origin[a]) / local.direction[a];
+        if (near > far) std::swap(near, far);
+        if (near > t0) {
+            t0 = near;
+            axis0 = a;
+        }
+        if (far < t1) {
+            t1 = far;
+            axis1 = a;
+        }
+        if (t0 > t1) return;
+    }
+    const bool entering = axis0 >= 0; // else the ray starts inside the box
+    const double t = entering ? t0 : t1;
+    const int axis = entering ? axis0 : axis1;
+    if (axis < 0 || !std::isfinite(t)) return;
+    glm::dvec3 normal(0.0);
+    normal[axis] = (local.direction[axis] > 0.0) == entering ? -1.0 : 1.0;
+    action.addLocalHit(local.at(t), normal, 0);
+}
+
 void pickShape(PickAction& action, Shape& shape) {
+    const PickStyle::Style style = PickStyle::inScope(action.state());
+    if (style == PickStyle::UNPICKABLE) return;
     const Mesh& m = shape.mesh(action.state());
+    if (style == PickStyle::BOUNDING_BOX) return pickLocalBox(action, m.bounds());
     if (m.primitive != Mesh::Primitive::Triangles || m.indices.size() < 3) return;
     const glm::dmat4& model = action.state().modelMatrix();
     const double det = glm::determinant(model);
@@ -64,12 +105,14 @@ void pickSlice(PickAction& action, const VolumeInScope& volume, const SlicePlane
 }
 
 void pickOrthoSlice(PickAction& action, OrthoSlice& slice) {
+    if (PickStyle::inScope(action.state()) == PickStyle::UNPICKABLE) return slice.doAction(action);
     if (const auto volume = gatherVolumeInScope(action.state()))
         pickSlice(action, *volume, slice.localPlane(*volume->data), slice.style());
     slice.doAction(action);
 }
 
 void pickObliqueSlice(PickAction& action, ObliqueSlice& slice) {
+    if (PickStyle::inScope(action.state()) == PickStyle::UNPICKABLE) return;
     const auto plane = slice.localPlane();
     if (!plane) return;
     if (const auto volume = gatherVolumeInScope(action.state()))
@@ -95,7 +138,10 @@ bool rayMeetsBox(const Ray& ray, const Box3& box) {
 }
 
 void pickGltfModel(PickAction& action, GltfModel& model) {
+    const PickStyle::Style style = PickStyle::inScope(action.state());
+    if (style == PickStyle::UNPICKABLE) return;
     const GltfAsset& a = model.asset();
+    if (style == PickStyle::BOUNDING_BOX) return pickLocalBox(action, a.bounds);
     const glm::dmat4& nodeModel = action.state().modelMatrix();
     const StateEntry* boxEntry = action.state().nearest<BoxClip>();
     std::size_t first = 0; // flat index of the instance's primitive's first triangle

@@ -23,6 +23,7 @@
 #include <volsg/nodes/Normal.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
+#include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/ResetTransform.h>
 #include <volsg/nodes/Rotation.h>
 #include <volsg/nodes/RotationXYZ.h>
@@ -85,6 +86,7 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(Units::classType());
     r.add(Info::classType());
     r.add(Label::classType());
+    r.add(PickStyle::classType());
 }
 
 } // namespace
