@@ -10,10 +10,13 @@
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/GltfModel.h>
+#include <volsg/nodes/LOD.h>
+#include <volsg/nodes/LevelOfDetail.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
 #include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/Shape.h>
+#include <volsg/render/InventorRendering.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/sections/SliceSampler.h>
 #include <volsg/volumescene/VolumeInScope.h>
@@ -190,6 +193,28 @@ void pickGltfModel(PickAction& action, GltfModel& model) {
     }
 }
 
+void traverseChild(PickAction& action, Group& group, int index) {
+    if (index < 0 || std::size_t(index) >= group.getNumChildren()) return;
+    if (Node* child = group.getChild(std::size_t(index))) action.traverse(*child);
+}
+
+/// LOD: the child for the distance from the pick's camera (or the ray's origin).
+void pickLOD(PickAction& action, LOD& node) {
+    const StateView* view = action.state().view();
+    const glm::dvec3 eye = view ? view->eye : action.worldRay().origin;
+    traverseChild(action, node, node.childFor(eye, action.state().modelMatrix()));
+}
+
+/// LevelOfDetail: the child drawn under the pick's camera; a ray given directly has no screen
+/// to measure on, and picks the first (most detailed) child.
+void pickLevelOfDetail(PickAction& action, LevelOfDetail& node) {
+    const StateView* view = action.state().view();
+    if (!view || !view->projected) return traverseChild(action, node, 0);
+    traverseChild(action, node,
+                  levelOfDetailChild(action.state(), node, view->view, view->projection,
+                                     view->width, view->height));
+}
+
 bool isFinite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -280,8 +305,22 @@ void PickAction::beginTraversal(Node& root) {
         near_ = pr.nearDistance;
         far_ = pr.farDistance;
         rayValid_ = true;
+        // LOD and LevelOfDetail choose their child by this camera.
+        StateView view;
+        view.view = camera->viewMatrix(cameraModel);
+        view.projection = camera->projectionMatrix(aspect);
+        view.eye = glm::dvec3(glm::inverse(view.view)[3]);
+        view.projected = true;
+        view.width = width_;
+        view.height = height_;
+        state().setView(view);
     }
     if (!rayValid_) return;
+    if (!hasPixel_) {
+        StateView view;
+        view.eye = worldRay_.origin;
+        state().setView(view);
+    }
     Action::beginTraversal(root);
 }
 
@@ -292,6 +331,8 @@ ActionMethods& PickAction::methods() {
         t->add(&pickOrthoSlice);
         t->add(&pickObliqueSlice);
         t->add(&pickGltfModel);
+        t->add(&pickLOD);
+        t->add(&pickLevelOfDetail);
         return t;
     }();
     return *table;

@@ -3,6 +3,8 @@
 
 #include <mutex>
 
+#include <volsg/nodes/Annotation.h>
+#include <volsg/nodes/Array.h>
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
@@ -15,11 +17,14 @@
 #include <volsg/nodes/IndexedFaceSet.h>
 #include <volsg/nodes/IndexedLineSet.h>
 #include <volsg/nodes/Info.h>
+#include <volsg/nodes/LOD.h>
 #include <volsg/nodes/Label.h>
+#include <volsg/nodes/LevelOfDetail.h>
 #include <volsg/nodes/Light.h>
 #include <volsg/nodes/LightModel.h>
 #include <volsg/nodes/Material.h>
 #include <volsg/nodes/MatrixTransform.h>
+#include <volsg/nodes/MultipleCopy.h>
 #include <volsg/nodes/Normal.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
@@ -28,6 +33,7 @@
 #include <volsg/nodes/Rotation.h>
 #include <volsg/nodes/RotationXYZ.h>
 #include <volsg/nodes/Scale.h>
+#include <volsg/nodes/Selection.h>
 #include <volsg/nodes/Separator.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
@@ -84,6 +90,12 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(Scale::classType());
     r.add(TransformSeparator::classType());
     r.add(Units::classType());
+    r.add(LOD::classType());
+    r.add(LevelOfDetail::classType());
+    r.add(Array::classType());
+    r.add(MultipleCopy::classType());
+    r.add(Selection::classType());
+    r.add(Annotation::classType());
     r.add(Info::classType());
     r.add(Label::classType());
     r.add(PickStyle::classType());
