@@ -9,6 +9,7 @@
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/File.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/LOD.h>
 #include <volsg/nodes/LevelOfDetail.h>
@@ -215,6 +216,12 @@ void pickLevelOfDetail(PickAction& action, LevelOfDetail& node) {
                                      view->width, view->height));
 }
 
+void pickFile(PickAction& action, File& node) {
+    node.update();
+    if (node.readError()) throw *node.readError();
+    node.doAction(action);
+}
+
 bool isFinite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -333,6 +340,7 @@ ActionMethods& PickAction::methods() {
         t->add(&pickGltfModel);
         t->add(&pickLOD);
         t->add(&pickLevelOfDetail);
+        t->add(&pickFile);
         return t;
     }();
     return *table;

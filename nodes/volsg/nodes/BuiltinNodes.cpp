@@ -12,6 +12,7 @@
 #include <volsg/nodes/Coordinate3.h>
 #include <volsg/nodes/Cube.h>
 #include <volsg/nodes/Cylinder.h>
+#include <volsg/nodes/File.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/Group.h>
 #include <volsg/nodes/IndexedFaceSet.h>
@@ -95,6 +96,7 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(Array::classType());
     r.add(MultipleCopy::classType());
     r.add(Selection::classType());
+    r.add(File::classType());
     r.add(Annotation::classType());
     r.add(Info::classType());
     r.add(Label::classType());

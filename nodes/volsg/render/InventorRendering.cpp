@@ -1,12 +1,13 @@
 // Render methods of the Inventor nodes that draw other than by their doAction: LOD and
-// LevelOfDetail (one child, chosen by the frame's camera) and Annotation (its children after
-// the rest of the frame, without depth test).
+// LevelOfDetail (one child, chosen by the frame's camera), Annotation (its children after the
+// rest of the frame, without depth test) and File (its read error).
 #include <limits>
 #include <memory>
 
 #include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/gl/GlLoader.h>
 #include <volsg/nodes/Annotation.h>
+#include <volsg/nodes/File.h>
 #include <volsg/nodes/LOD.h>
 #include <volsg/nodes/LevelOfDetail.h>
 #include <volsg/render/BuiltinRendering.h>
@@ -117,12 +118,19 @@ void renderAnnotation(RenderAction& action, Annotation& node) {
                                   [&frame, state, keep] { drawAnnotation(frame, *state, *keep); });
 }
 
+void renderFile(RenderAction& action, File& node) {
+    node.update();
+    if (node.readError()) throw *node.readError();
+    node.doAction(action);
+}
+
 } // namespace
 
 void addInventorRenderMethods(ActionMethods& methods) {
     methods.add(&renderLOD);
     methods.add(&renderLevelOfDetail);
     methods.add(&renderAnnotation);
+    methods.add(&renderFile);
 }
 
 } // namespace volsg
