@@ -4,9 +4,12 @@
 #include <mutex>
 
 #include <volsg/nodes/Annotation.h>
+#include <volsg/nodes/AppearanceKit.h>
 #include <volsg/nodes/Array.h>
+#include <volsg/nodes/BaseKit.h>
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
+#include <volsg/nodes/CameraKit.h>
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/Cone.h>
 #include <volsg/nodes/Coordinate3.h>
@@ -22,10 +25,12 @@
 #include <volsg/nodes/Label.h>
 #include <volsg/nodes/LevelOfDetail.h>
 #include <volsg/nodes/Light.h>
+#include <volsg/nodes/LightKit.h>
 #include <volsg/nodes/LightModel.h>
 #include <volsg/nodes/Material.h>
 #include <volsg/nodes/MatrixTransform.h>
 #include <volsg/nodes/MultipleCopy.h>
+#include <volsg/nodes/NodeKitListPart.h>
 #include <volsg/nodes/Normal.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
@@ -34,8 +39,11 @@
 #include <volsg/nodes/Rotation.h>
 #include <volsg/nodes/RotationXYZ.h>
 #include <volsg/nodes/Scale.h>
+#include <volsg/nodes/SceneKit.h>
 #include <volsg/nodes/Selection.h>
 #include <volsg/nodes/Separator.h>
+#include <volsg/nodes/SeparatorKit.h>
+#include <volsg/nodes/ShapeKit.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Switch.h>
@@ -48,6 +56,7 @@
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeObject.h>
 #include <volsg/nodes/VolumeSeries.h>
+#include <volsg/nodes/WrapperKit.h>
 
 namespace volsg {
 
@@ -101,6 +110,15 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(Info::classType());
     r.add(Label::classType());
     r.add(PickStyle::classType());
+    r.add(NodeKitListPart::classType());
+    r.add(BaseKit::classType());
+    r.add(AppearanceKit::classType());
+    r.add(SeparatorKit::classType());
+    r.add(ShapeKit::classType());
+    r.add(WrapperKit::classType());
+    r.add(LightKit::classType());
+    r.add(CameraKit::classType());
+    r.add(SceneKit::classType());
 }
 
 } // namespace
