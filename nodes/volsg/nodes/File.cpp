@@ -1,14 +1,17 @@
 // File: Inventor's SoFile. The included files are read without recursion: a File met while an
 // included file is being parsed queues itself, and the File that started the include reads the
-// queue after that parse, so the stack never holds more than two parses and a chain of
-// includes of any length costs no stack. Every include carries the chain of files that led to
-// it, so a file that includes itself (directly or through others) is refused; the nodes of
-// all the files one read brings in count together against limits::maxSceneNodes.
+// queue after that parse, so a chain of includes of any length costs no stack. Each included
+// file is parsed on a thread of its own, so its nesting has a whole stack to itself, as the
+// scene file's own has, whatever the nesting depth of the File that names it. Every include
+// carries the chain of files that led to it, so a file that includes itself (directly or
+// through others) is refused; the nodes of all the files one read brings in count together
+// against limits::maxSceneNodes.
 #include <volsg/nodes/File.h>
 
 #include <deque>
+#include <exception>
 #include <filesystem>
-#include <tuple>
+#include <thread>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -68,7 +71,7 @@ struct Pending {
     Chain chain; ///< the files being read when the File was met, outermost first
 };
 
-/// Set while an included file is parsed on this thread: the Files met there queue themselves.
+/// Set on the thread that parses an included file: the Files met there queue themselves.
 struct NestedParse {
     std::vector<Pending>* queue = nullptr;
     const Chain* chain = nullptr;
@@ -119,6 +122,26 @@ std::size_t countNodes(Node& root) {
         }
     }
     return seen.size();
+}
+
+/// Reads an included file on a thread of its own (a fresh stack: the reader's nesting limit is
+/// sized for one), with the Files met in it queued into `found`.
+ref_ptr<Node> parseIncluded(const std::string& path, std::vector<Pending>& found,
+                            const Chain& chain) {
+    ref_ptr<Node> graph;
+    std::exception_ptr failure;
+    std::thread reader([&] {
+        nested = {&found, &chain};
+        try {
+            graph = readScene(path);
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        nested = {};
+    });
+    reader.join();
+    if (failure) std::rethrow_exception(failure);
+    return graph;
 }
 
 std::string chainText(const Chain& chain, const std::string& last) {
@@ -185,24 +208,14 @@ struct FileIncluder {
             inner.push_back({path, key});
             std::vector<Pending> found;
             ref_ptr<Node> graph;
-            {
-                const NestedParse outer = nested;
-                nested = {&found, &inner};
-                try {
-                    graph = readScene(path);
-                } catch (const Error& e) {
-                    nested = outer;
-                    // Errors in an included file name that file; say which File included it.
-                    if (e.file() == path)
-                        throw Error(e.message() + " (in the file included by the File at " +
-                                        place(file) + ")",
-                                    e.file(), e.line(), e.column());
-                    throw;
-                } catch (...) {
-                    nested = outer;
-                    throw;
-                }
-                nested = outer;
+            try {
+                graph = parseIncluded(path, found, inner);
+            } catch (const Error& e) {
+                // Errors in an included file name that file; say which File included it.
+                if (e.file() != path) throw;
+                throw Error(e.message() + " (in the file included by the File at " + place(file) +
+                                ")",
+                            e.file(), e.line(), e.column());
             }
             nodes += countNodes(*graph);
             if (nodes > limits::maxSceneNodes)
