@@ -11,6 +11,7 @@ void State::reset(const glm::dmat4& model) {
     models_.assign(1, model);
     entries_.clear();
     marks_.clear();
+    hasView_ = false;
 }
 
 void State::push() {

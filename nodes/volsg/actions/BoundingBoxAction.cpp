@@ -1,5 +1,6 @@
 #include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/gltf/GltfAsset.h>
+#include <volsg/nodes/File.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
@@ -56,6 +57,13 @@ void boundResetTransform(BoundingBoxAction& action, ResetTransform& node) {
     node.doAction(action);
 }
 
+/// A File whose file could not be read: its error, as a render's (the box would be wrong).
+void boundFile(BoundingBoxAction& action, File& node) {
+    node.update();
+    if (node.readError()) throw *node.readError();
+    node.doAction(action);
+}
+
 } // namespace
 
 ActionMethods& BoundingBoxAction::methods() {
@@ -68,6 +76,7 @@ ActionMethods& BoundingBoxAction::methods() {
         t->add(&boundObliqueSlice);
         t->add(&boundGltfModel);
         t->add(&boundResetTransform);
+        t->add(&boundFile);
         return t;
     }();
     return *table;

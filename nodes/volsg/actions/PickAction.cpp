@@ -9,10 +9,15 @@
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/File.h>
 #include <volsg/nodes/GltfModel.h>
+#include <volsg/nodes/LOD.h>
+#include <volsg/nodes/LevelOfDetail.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
+#include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/Shape.h>
+#include <volsg/render/InventorRendering.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/sections/SliceSampler.h>
 #include <volsg/volumescene/VolumeInScope.h>
@@ -21,8 +26,48 @@ namespace volsg {
 
 namespace {
 
+/// PickStyle BOUNDING_BOX: the ray against a local box, hit where it enters the box (where it
+/// leaves it when it starts inside), with the normal of that face.
+void pickLocalBox(PickAction& action, const Box3& box) {
+    if (box.isEmpty()) return;
+    const glm::dmat4& model = action.state().modelMatrix();
+    const double det = glm::determinant(model);
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return; // flattened: nothing to hit
+    const Ray local = action.worldRay().transformed(glm::inverse(model));
+    double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+    int axis0 = -1, axis1 = -1;
+    for (int a = 0; a < 3; ++a) {
+        if (local.direction[a] == 0.0) {
+            if (local.origin[a] < box.min[a] || local.origin[a] > box.max[a]) return;
+            continue;
+        }
+        double near = (box.min[a] - local.origin[a]) / local.direction[a];
+        double far = (box.max[a] - local.origin[a]) / local.direction[a];
+        if (near > far) std::swap(near, far);
+        if (near > t0) {
+            t0 = near;
+            axis0 = a;
+        }
+        if (far < t1) {
+            t1 = far;
+            axis1 = a;
+        }
+        if (t0 > t1) return;
+    }
+    const bool entering = axis0 >= 0; // else the ray starts inside the box
+    const double t = entering ? t0 : t1;
+    const int axis = entering ? axis0 : axis1;
+    if (axis < 0 || !std::isfinite(t)) return;
+    glm::dvec3 normal(0.0);
+    normal[axis] = (local.direction[axis] > 0.0) == entering ? -1.0 : 1.0;
+    action.addLocalHit(local.at(t), normal, 0);
+}
+
 void pickShape(PickAction& action, Shape& shape) {
+    const PickStyle::Style style = PickStyle::inScope(action.state());
+    if (style == PickStyle::UNPICKABLE) return;
     const Mesh& m = shape.mesh(action.state());
+    if (style == PickStyle::BOUNDING_BOX) return pickLocalBox(action, m.bounds());
     if (m.primitive != Mesh::Primitive::Triangles || m.indices.size() < 3) return;
     const glm::dmat4& model = action.state().modelMatrix();
     const double det = glm::determinant(model);
@@ -64,12 +109,14 @@ void pickSlice(PickAction& action, const VolumeInScope& volume, const SlicePlane
 }
 
 void pickOrthoSlice(PickAction& action, OrthoSlice& slice) {
+    if (PickStyle::inScope(action.state()) == PickStyle::UNPICKABLE) return slice.doAction(action);
     if (const auto volume = gatherVolumeInScope(action.state()))
         pickSlice(action, *volume, slice.localPlane(*volume->data), slice.style());
     slice.doAction(action);
 }
 
 void pickObliqueSlice(PickAction& action, ObliqueSlice& slice) {
+    if (PickStyle::inScope(action.state()) == PickStyle::UNPICKABLE) return;
     const auto plane = slice.localPlane();
     if (!plane) return;
     if (const auto volume = gatherVolumeInScope(action.state()))
@@ -95,7 +142,10 @@ bool rayMeetsBox(const Ray& ray, const Box3& box) {
 }
 
 void pickGltfModel(PickAction& action, GltfModel& model) {
+    const PickStyle::Style style = PickStyle::inScope(action.state());
+    if (style == PickStyle::UNPICKABLE) return;
     const GltfAsset& a = model.asset();
+    if (style == PickStyle::BOUNDING_BOX) return pickLocalBox(action, a.bounds);
     const glm::dmat4& nodeModel = action.state().modelMatrix();
     const StateEntry* boxEntry = action.state().nearest<BoxClip>();
     std::size_t first = 0; // flat index of the instance's primitive's first triangle
@@ -142,6 +192,34 @@ void pickGltfModel(PickAction& action, GltfModel& model) {
             first += triangles;
         }
     }
+}
+
+void traverseChild(PickAction& action, Group& group, int index) {
+    if (index < 0 || std::size_t(index) >= group.getNumChildren()) return;
+    if (Node* child = group.getChild(std::size_t(index))) action.traverse(*child);
+}
+
+/// LOD: the child for the distance from the pick's camera (or the ray's origin).
+void pickLOD(PickAction& action, LOD& node) {
+    const StateView* view = action.state().view();
+    const glm::dvec3 eye = view ? view->eye : action.worldRay().origin;
+    traverseChild(action, node, node.childFor(eye, action.state().modelMatrix()));
+}
+
+/// LevelOfDetail: the child drawn under the pick's camera; a ray given directly has no screen
+/// to measure on, and picks the first (most detailed) child.
+void pickLevelOfDetail(PickAction& action, LevelOfDetail& node) {
+    const StateView* view = action.state().view();
+    if (!view || !view->projected) return traverseChild(action, node, 0);
+    traverseChild(action, node,
+                  levelOfDetailChild(action.state(), node, view->view, view->projection,
+                                     view->width, view->height));
+}
+
+void pickFile(PickAction& action, File& node) {
+    node.update();
+    if (node.readError()) throw *node.readError();
+    node.doAction(action);
 }
 
 bool isFinite(const glm::dvec3& v) {
@@ -234,8 +312,22 @@ void PickAction::beginTraversal(Node& root) {
         near_ = pr.nearDistance;
         far_ = pr.farDistance;
         rayValid_ = true;
+        // LOD and LevelOfDetail choose their child by this camera.
+        StateView view;
+        view.view = camera->viewMatrix(cameraModel);
+        view.projection = camera->projectionMatrix(aspect);
+        view.eye = glm::dvec3(glm::inverse(view.view)[3]);
+        view.projected = true;
+        view.width = width_;
+        view.height = height_;
+        state().setView(view);
     }
     if (!rayValid_) return;
+    if (!hasPixel_) {
+        StateView view;
+        view.eye = worldRay_.origin;
+        state().setView(view);
+    }
     Action::beginTraversal(root);
 }
 
@@ -246,6 +338,9 @@ ActionMethods& PickAction::methods() {
         t->add(&pickOrthoSlice);
         t->add(&pickObliqueSlice);
         t->add(&pickGltfModel);
+        t->add(&pickLOD);
+        t->add(&pickLevelOfDetail);
+        t->add(&pickFile);
         return t;
     }();
     return *table;

@@ -5,8 +5,13 @@
 
 #include <volsg/nodes/BaseColor.h>
 #include <volsg/nodes/Bindings.h>
+#include <volsg/nodes/Annotation.h>
+#include <volsg/nodes/AppearanceKit.h>
+#include <volsg/nodes/Array.h>
+#include <volsg/nodes/BaseKit.h>
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
+#include <volsg/nodes/CameraKit.h>
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/Complexity.h>
 #include <volsg/nodes/Cone.h>
@@ -17,24 +22,40 @@
 #include <volsg/nodes/DrawStyle.h>
 #include <volsg/nodes/Environment.h>
 #include <volsg/nodes/FaceSet.h>
+#include <volsg/nodes/File.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/Group.h>
 #include <volsg/nodes/IndexedFaceSet.h>
 #include <volsg/nodes/IndexedLineSet.h>
 #include <volsg/nodes/IndexedTriangleStripSet.h>
+#include <volsg/nodes/Info.h>
+#include <volsg/nodes/LOD.h>
+#include <volsg/nodes/Label.h>
+#include <volsg/nodes/LevelOfDetail.h>
 #include <volsg/nodes/Light.h>
+#include <volsg/nodes/LightKit.h>
 #include <volsg/nodes/LightModel.h>
 #include <volsg/nodes/LineSet.h>
 #include <volsg/nodes/Material.h>
 #include <volsg/nodes/MatrixTransform.h>
+#include <volsg/nodes/MultipleCopy.h>
+#include <volsg/nodes/NodeKitListPart.h>
 #include <volsg/nodes/Normal.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
 #include <volsg/nodes/PointSet.h>
 #include <volsg/nodes/QuadMesh.h>
+#include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/ResetTransform.h>
+#include <volsg/nodes/Rotation.h>
+#include <volsg/nodes/RotationXYZ.h>
+#include <volsg/nodes/Scale.h>
+#include <volsg/nodes/SceneKit.h>
+#include <volsg/nodes/Selection.h>
 #include <volsg/nodes/Separator.h>
 #include <volsg/nodes/ShapeHints.h>
+#include <volsg/nodes/SeparatorKit.h>
+#include <volsg/nodes/ShapeKit.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Switch.h>
@@ -48,10 +69,14 @@
 #include <volsg/nodes/Transform.h>
 #include <volsg/nodes/TriangleStripSet.h>
 #include <volsg/nodes/VertexProperty.h>
+#include <volsg/nodes/TransformSeparator.h>
+#include <volsg/nodes/Translation.h>
+#include <volsg/nodes/Units.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeObject.h>
 #include <volsg/nodes/VolumeSeries.h>
+#include <volsg/nodes/WrapperKit.h>
 
 namespace volsg {
 
@@ -113,6 +138,31 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(QuadMesh::classType());
     r.add(LineSet::classType());
     r.add(PointSet::classType());
+    r.add(Translation::classType());
+    r.add(RotationNode::classType());
+    r.add(RotationXYZ::classType());
+    r.add(Scale::classType());
+    r.add(TransformSeparator::classType());
+    r.add(Units::classType());
+    r.add(LOD::classType());
+    r.add(LevelOfDetail::classType());
+    r.add(Array::classType());
+    r.add(MultipleCopy::classType());
+    r.add(Selection::classType());
+    r.add(File::classType());
+    r.add(Annotation::classType());
+    r.add(Info::classType());
+    r.add(Label::classType());
+    r.add(PickStyle::classType());
+    r.add(NodeKitListPart::classType());
+    r.add(BaseKit::classType());
+    r.add(AppearanceKit::classType());
+    r.add(SeparatorKit::classType());
+    r.add(ShapeKit::classType());
+    r.add(WrapperKit::classType());
+    r.add(LightKit::classType());
+    r.add(CameraKit::classType());
+    r.add(SceneKit::classType());
 }
 
 } // namespace
