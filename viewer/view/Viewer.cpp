@@ -22,10 +22,12 @@
 #include <volsg/actions/SearchAction.h>
 #include <volsg/context/GlfwWindow.h>
 #include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 #include <volsg/editors/ScenePicker.h>
 #include <volsg/editors/panels/MaterialPanel.h>
 #include <volsg/editors/panels/PlaneOpacityPanel.h>
 #include <volsg/image/Image.h>
+#include <volsg/io/RegularFile.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/io/SceneWriter.h>
 #include <volsg/manipulators/BoxClipManip.h>
@@ -57,6 +59,7 @@ Viewer* viewerOf(GLFWwindow* w) {
 }
 
 std::string readText(const std::string& path) {
+    regularFileSize(path, "cannot read", limits::maxSceneFileSize); // never open a FIFO
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error("cannot open '" + path + "'");
     std::stringstream s;

@@ -1,6 +1,7 @@
 #pragma once
 // Base of the verbs that traverse a scene graph: render, bounding box, pick, search, write.
 
+#include <cstdint>
 #include <vector>
 
 #include <volsg/core/Node.h>
@@ -17,8 +18,13 @@ public:
 
     /// Runs the action on a graph: resets state and path, then traverses the root.
     void apply(Node& root);
-    /// Visits one node (called by groups for their children).
+    /// Visits one node (called by groups for their children). Throws Error when one traversal
+    /// reaches more than limits::maxTraversalInstances nodes (a graph whose USEs multiply: each
+    /// instance counts, not each node). An error thrown at a node read from a file is said of
+    /// that node: "file:line:column: Type 'name': what went wrong".
     void traverse(Node& node);
+    /// Nodes this traversal has reached so far (every instance of a shared node counts).
+    std::uint64_t instances() const { return instances_; }
 
     State& state() { return state_; }
     const State& state() const { return state_; }
@@ -42,6 +48,7 @@ private:
     State state_;
     std::vector<Node*> path_;
     bool terminated_ = false;
+    std::uint64_t instances_ = 0;
 };
 
 } // namespace volsg

@@ -1,5 +1,7 @@
 #include <volsg/core/Error.h>
 
+#include <string_view>
+
 namespace volsg {
 
 namespace {
@@ -46,18 +48,35 @@ std::string printable(const std::string& text) {
     return out;
 }
 
+/// At most Error::kMaxMessageLength characters: the start and the end of a longer text, so a
+/// message quoting a huge value (a 3 MB data: URI) stays one readable line.
+std::string bounded(std::string text) {
+    constexpr std::size_t max = Error::kMaxMessageLength;
+    if (text.size() <= max) return text;
+    constexpr std::string_view cut = " [...] ";
+    const std::size_t head = (max - cut.size()) * 2 / 3, tail = max - cut.size() - head;
+    return text.substr(0, head) + std::string(cut) + text.substr(text.size() - tail);
+}
+
 std::string format(const std::string& message, const std::string& file, int line, int column) {
     std::string where = file;
     if (line > 0) {
         where += (where.empty() ? "" : ":") + std::to_string(line);
         if (column > 0) where += ":" + std::to_string(column);
     }
-    return printable(where.empty() ? message : where + ": " + message);
+    return bounded(printable(where.empty() ? message : where + ": " + message));
 }
 } // namespace
 
 Error::Error(std::string message, std::string file, int line, int column)
     : std::runtime_error(format(message, file, line, column)), message_(std::move(message)),
       file_(std::move(file)), line_(line), column_(column) {}
+
+Error Error::atSceneNode(const std::exception& inner, const std::string& node,
+                         const std::string& file, int line, int column) {
+    Error e(node + ": " + inner.what(), file, line, column);
+    e.namesSceneNode_ = true;
+    return e;
+}
 
 } // namespace volsg

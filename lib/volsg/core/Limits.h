@@ -19,6 +19,11 @@ inline constexpr std::uintmax_t maxSceneFileSize = std::uintmax_t(1) << 30;
 inline constexpr int maxSceneNestingDepth = 1000;
 /// Most nodes one scene file may create (USE does not count: it shares a node).
 inline constexpr std::size_t maxSceneNodes = std::size_t(1) << 22;
+/// Most node instances one traversal of a scene may reach (every USE of a shared node counts
+/// once per path to it): a graph of 40 groups each USEing the one before twice has 2^40.
+inline constexpr std::uint64_t maxTraversalInstances = std::uint64_t(1) << 24;
+/// Most volume nodes (Volume, ShearWarpVolume) one frame may draw, counting every USE.
+inline constexpr std::uint64_t maxVolumeInstances = 256;
 /// Most children of one node.
 inline constexpr std::size_t maxSceneChildren = std::size_t(1) << 20;
 /// Most values in one multiple-value field (MFFloat, MFVec3f, MFNode, ...).
@@ -32,6 +37,10 @@ inline constexpr std::size_t maxStringLength = std::size_t(64) << 20;
 
 // --- Volume files (volumeio, volume::VolumeGrid) ---
 
+/// The range of a voxel's size along an axis: within it single-precision GL keeps the digits a
+/// volume needs (1e18-unit voxels overflow its squared lengths and show nothing).
+inline constexpr double minVolumeSpacing = 1e-9;
+inline constexpr double maxVolumeSpacing = 1e12;
 /// Largest number of voxels along one axis of any volume (file, generator or GL upload).
 inline constexpr int maxVolumeDimension = 1 << 16;
 /// Largest voxel storage a grid may take unless the caller allows more (a bad header must give
@@ -42,6 +51,13 @@ inline constexpr std::size_t maxHeaderLineLength = std::size_t(64) << 10;
 /// Longest NRRD or MetaImage header.
 inline constexpr std::size_t maxHeaderLength = std::size_t(1) << 20;
 
+// --- Volume rendering (slicing/, shearwarp/) ---
+/// Most samples the Volume slicer takes along one ray: planes x samplesPerPlane (2 per voxel
+/// across a 32768-voxel diagonal).
+inline constexpr long maxSamplesPerRay = 65536;
+/// Most pixels of a shear-warp intermediate image (one per voxel of a slice, sheared): 2^25
+/// pixels is 512 MB of colour alone.
+inline constexpr std::size_t maxShearWarpIntermediatePixels = std::size_t(1) << 25;
 // --- glTF (gltf/GltfLoader) ---
 
 /// Largest .gltf/.glb file, and largest external buffer or image file it names.

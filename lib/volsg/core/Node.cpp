@@ -22,6 +22,12 @@ const NodeType& Node::classType() {
 Node::Node() : version_(nextVersion()) {}
 Node::~Node() = default;
 
+std::string Node::description() const {
+    std::string out = type().name();
+    if (!name_.empty()) out += " '" + name_ + "'";
+    return out;
+}
+
 void Node::touch() {
     version_ = nextVersion();
 }

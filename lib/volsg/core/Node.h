@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -17,6 +18,12 @@ namespace volsg {
 class Action;
 class Field;
 struct ReadContext;
+
+/// Where a node was read from: the scene file and the line and column of its type name.
+struct SourcePlace {
+    std::shared_ptr<const std::string> file; ///< null: made in code
+    int line = 0, column = 0;
+};
 
 /// A scene-graph node. Nodes hold fields and do their state work (doAction); what a node
 /// type does in each action (draw, bound, pick) is that action's method for the type
@@ -34,6 +41,13 @@ public:
 
     const std::string& getName() const { return name_; }
     void setName(std::string name) { name_ = std::move(name); }
+
+    /// Where the reader found the node (empty for nodes made in code): errors while an action
+    /// is at the node name this place (Action::traverse).
+    const SourcePlace& sourcePlace() const { return place_; }
+    void setSourcePlace(SourcePlace place) { place_ = std::move(place); }
+    /// The node as messages name it: its type, and its name when it has one ("Volume 'CT'").
+    std::string description() const;
 
     std::uint64_t version() const { return version_; }
     void touch(); ///< marks the node changed (called by its fields)
@@ -68,6 +82,7 @@ protected:
 private:
     std::string name_;
     std::uint64_t version_;
+    SourcePlace place_;
 };
 
 /// Writes the per-type boilerplate once (as VulkanSceneGraph's Inherit):

@@ -77,6 +77,8 @@ struct FrameContext {
     /// While interactive: the factor on the volumes' interactive plane count, in (0, 1].
     double interactivePlaneScale = 1.0;
     RenderDebug debug;
+    /// Volume nodes drawn so far in this frame, every USE counted (limits::maxVolumeInstances).
+    std::uint64_t volumeInstances = 0;
 };
 
 } // namespace volsg

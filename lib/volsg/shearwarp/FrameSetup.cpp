@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 #include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 
 namespace volsg::shearwarp {
 
@@ -148,10 +150,31 @@ glm::dmat4 indexToLocalMatrix(const VoxelObject& object) {
     return m;
 }
 
+bool isFinite(const glm::dmat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+bool isFinite(const glm::dmat3& m) {
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
 Factorisation factorise(const VoxelObject& first, const ShearWarpView& view) {
     Factorisation f;
     f.indexToLocal = indexToLocalMatrix(first);
     const glm::dmat4 E = view.modelView * f.indexToLocal; // index -> eye
+    // A singular or non-finite transform has no factorisation: refused, as the reference ray
+    // caster refuses it, before any size or index is computed from it.
+    const double det = glm::determinant(glm::dmat3(E));
+    if (!isFinite(E) || !isFinite(view.projection) || !std::isfinite(det) || det == 0.0 ||
+        !isFinite(glm::inverse(glm::dmat3(E))))
+        throw Error("ShearWarpVolume: the transform to the view is singular or not finite "
+                    "(a zero or extreme scale, or an extreme translation)");
     chooseAxes(f, E, first.dimensions());
     f.projection = view.projection;
     f.width = view.width;
@@ -164,6 +187,9 @@ Factorisation factorise(const VoxelObject& first, const ShearWarpView& view) {
     f.warp[1] = glm::dvec3(p01 - p00, 0.0);
     f.warp[2] = glm::dvec3(p00, 1.0);
     f.unwarp = glm::inverse(f.warp);
+    // A volume far outside the view, or seen as a point, may give a warp that cannot be
+    // inverted in double precision: then it shows nothing (every pixel misses it).
+    f.warpValid = isFinite(f.warp) && isFinite(f.unwarp) && glm::determinant(f.warp) != 0.0;
     f.z0 = eyeOf(E, indexPoint(f, 0, 0, 0)).z;
     f.zu = eyeOf(E, indexPoint(f, 1, 0, 0)).z - f.z0;
     f.zv = eyeOf(E, indexPoint(f, 0, 1, 0)).z - f.z0;
@@ -270,6 +296,13 @@ FramePaths choosePaths(const std::vector<FrameObject>& objects, const ShearWarpV
 FrameBuffers sizeBuffers(FrameScratch& s, ShearWarpFrame& frame, const Factorisation& f,
                          const FramePaths& paths) {
     const std::size_t pixels = std::size_t(f.W) * std::size_t(f.H);
+    // One intermediate pixel per voxel across the principal slices, whatever the output size:
+    // a total checked before anything is allocated.
+    if (pixels > limits::maxShearWarpIntermediatePixels)
+        throw Error("ShearWarpVolume: the intermediate image of " + std::to_string(f.W) + " x " +
+                    std::to_string(f.H) + " pixels for this view is larger than the limit of " +
+                    std::to_string(limits::maxShearWarpIntermediatePixels) +
+                    " (one pixel per voxel of a slice)");
     ensureSize(s.global, pixels);
     if (paths.twoLevel) {
         ensureSize(s.local, pixels);

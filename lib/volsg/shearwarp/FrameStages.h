@@ -85,6 +85,7 @@ struct Factorisation {
     bool ascending = false;      ///< back to front is ascending k
     glm::dmat3 warp{1.0};        ///< (u, v, 1) -> output pixel
     glm::dmat3 unwarp{1.0};      ///< output pixel (x, y, 1) -> (u, v, 1)
+    bool warpValid = true;       ///< false: not invertible in double precision (nothing shows)
     /// Eye z of intermediate pixel (u, v) at slice k: z0 + zu u + zv v + zk k.
     double z0 = 0.0, zu = 0.0, zv = 0.0, zk = 0.0;
     double stepRatio = 1.0; ///< ds / L0: the slab of one slice step over the smallest spacing

@@ -244,8 +244,10 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     // 5. Buffers and threads.
     const FrameBuffers buffers = sizeBuffers(scratch_, frame, f, paths);
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-    const int threads =
-        std::clamp(view.threads > 0 ? view.threads : int(hardware), 1, std::max(1, f.H / 4));
+    // Never more threads than cores (a thread per core is the most that can help, and a huge
+    // count would only exhaust stacks), nor than bands of four rows.
+    const int threads = std::clamp(view.threads > 0 ? view.threads : int(hardware), 1,
+                                   std::max(1, std::min(int(hardware), f.H / 4)));
     scratch_.bands.resize(std::size_t(threads));
     // 6. Compositing: pure DVR and two-level frames by bands of rows, pure MIP by value.
     const std::vector<TwoLevelObject> twoLevel = twoLevelObjects(objectsOfFrame);
@@ -268,6 +270,9 @@ std::optional<ShearWarpPick> ShearWarpRenderer::pick(const ShearWarpFrame& frame
     const glm::ivec2 size = frame.stats.intermediateSize;
     if (size.x <= 0) return std::nullopt;
     const glm::dvec3 uv = frame.outputToIntermediate * glm::dvec3(x, y, 1.0);
+    // Tested before rounding, NaN-proof: lround of a huge or NaN value is undefined.
+    if (!(uv.x > -0.5 && uv.y > -0.5 && uv.x < size.x - 0.5 && uv.y < size.y - 0.5))
+        return std::nullopt;
     const int u = int(std::lround(uv.x)), v = int(std::lround(uv.y));
     if (u < 0 || v < 0 || u >= size.x || v >= size.y) return std::nullopt;
     const std::size_t p = std::size_t(v) * std::size_t(size.x) + std::size_t(u);

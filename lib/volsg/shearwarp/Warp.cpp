@@ -31,7 +31,7 @@ bool warpSpan(const WarpJob& job, const glm::dvec2& rowStart, const glm::dvec2& 
     for (int i = 0; i < 2; ++i) { // lo <= rowStart[i] + x perPixel[i] <= hi
         const double lo = job.reach[i], hi = job.reach[i + 2];
         if (std::abs(perPixel[i]) < 1e-12) {
-            if (rowStart[i] < lo || rowStart[i] > hi) xTo = -1.0;
+            if (!(rowStart[i] >= lo && rowStart[i] <= hi)) xTo = -1.0;
             continue;
         }
         double a0 = (lo - rowStart[i]) / perPixel[i], a1 = (hi - rowStart[i]) / perPixel[i];
@@ -39,9 +39,10 @@ bool warpSpan(const WarpJob& job, const glm::dvec2& rowStart, const glm::dvec2& 
         xFrom = std::max(xFrom, a0);
         xTo = std::min(xTo, a1);
     }
-    if (xFrom > xTo) return false;
-    xBegin = std::max(0, int(std::floor(xFrom)) - 1);
-    xEnd = std::min(width, int(std::ceil(xTo)) + 2);
+    if (!(xFrom <= xTo)) return false; // also when either is NaN
+    // Clamped in double before the conversion: an extreme view gives values no int holds.
+    xBegin = int(std::clamp(std::floor(xFrom) - 1.0, 0.0, double(width)));
+    xEnd = int(std::clamp(std::ceil(xTo) + 2.0, 0.0, double(width)));
     return xBegin < xEnd;
 }
 
@@ -63,7 +64,8 @@ void warpRow(const WarpJob& job, int y, const glm::dvec2& rowStart, const glm::d
             if (uv.y < vLo - 0.5 || uv.y > vHi + 0.5) continue;
             uv.y = std::clamp(uv.y, vLo, vHi);
         }
-        if (uv.x <= -1.0 || uv.y <= -1.0 || uv.x >= W || uv.y >= H) continue;
+        // Written so that NaN fails it: a NaN coordinate must never become an index.
+        if (!(uv.x > -1.0 && uv.y > -1.0 && uv.x < W && uv.y < H)) continue;
         const int u = int(uv.x + 1.0) - 1, v = int(uv.y + 1.0) - 1; // floor, uv > -1
         const float wu = float(uv.x - u), wv = float(uv.y - v);
         if (u >= 0 && v >= 0 && u + 1 < W && v + 1 < H) { // inside: no bounds checks
@@ -89,6 +91,7 @@ glm::ivec4 warpRows(const WarpJob& job, int y0, int y1) {
     const Factorisation& f = *job.factorisation;
     const glm::dvec2 perPixel(f.unwarp[0]); // (u, v) per output pixel along x
     glm::ivec4 drawn(f.width, f.height, 0, 0);
+    if (!f.warpValid) return drawn;
     for (int y = y0; y < y1; ++y) {
         const glm::dvec2 rowStart(f.unwarp * glm::dvec3(0.0, y, 1.0));
         int xBegin = 0, xEnd = 0;

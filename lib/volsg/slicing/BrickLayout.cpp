@@ -8,6 +8,8 @@ namespace volsg {
 
 namespace {
 
+constexpr int kMaxBricksPerAxis = 16;
+
 int bricksAlong(int voxels, int cells) {
     return voxels <= 1 ? 1 : (voxels - 1 + cells - 1) / cells;
 }
@@ -35,6 +37,12 @@ BrickLayout::BrickLayout(glm::ivec3 dimensions, glm::dvec3 spacing, const Limits
     const int maxSize = std::max(limits.maxTextureSize, 2);
     const int guard = std::max(limits.guard, 0);
     cells_ = glm::max(dims_ - 1, glm::ivec3(1));
+    // At most kMaxBricksPerAxis bricks along an axis (unless the texture size limit needs
+    // more): a tiny budget gets bricks of 1/16 of the axis instead of voxel-sized bricks
+    // (n^3 of them, each drawn per plane), and says it does not fit.
+    glm::ivec3 minCells;
+    for (int a = 0; a < 3; ++a)
+        minCells[a] = (cells_[a] + kMaxBricksPerAxis - 1) / kMaxBricksPerAxis;
     for (;;) {
         glm::ivec3 texels;
         for (int a = 0; a < 3; ++a)
@@ -46,8 +54,12 @@ BrickLayout::BrickLayout(glm::ivec3 dimensions, glm::dvec3 spacing, const Limits
         if (withinBudget && withinSize) break;
         // Halve the axis with the largest texture that can still be split.
         int axis = -1;
+        // The texture size limit always holds; the minimum brick only bounds what the budget
+        // may ask for.
         for (int a = 0; a < 3; ++a)
-            if (cells_[a] > 1 && (axis < 0 || texels[a] > texels[axis])) axis = a;
+            if (cells_[a] > 1 && (!withinSize || (cells_[a] + 1) / 2 >= minCells[a]) &&
+                (axis < 0 || texels[a] > texels[axis]))
+                axis = a;
         if (axis < 0) {
             fitsBudget_ = withinBudget;
             break;

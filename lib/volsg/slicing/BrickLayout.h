@@ -34,7 +34,8 @@ struct Brick {
 ///
 /// The volume is bricked when its texture would exceed `budgetBytes` (0: no limit) or
 /// `maxTextureSize` along an axis. Bricks are halved along their longest texture axis until
-/// one fits; a budget smaller than the smallest brick (2 cells a side) gives that brick.
+/// one fits; a budget smaller than the smallest brick (1 cell a side, or 1/16 of the axis,
+/// whichever is larger) gives that brick, and `fitsBudget()` is false.
 class BrickLayout {
 public:
     struct Limits {

@@ -1,6 +1,8 @@
 // The Volume slicer's geometry of a frame: local view, plane layout, clip planes, brick slices.
 #include <volsg/slicing/SliceGeometry.h>
 
+#include <volsg/core/Limits.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -170,6 +172,9 @@ PlaneLayout planeLayout(const LocalView& local, const SlicingSettings& settings,
                           std::min(planes, kMinScaledPlanes));
     }
     planes = std::clamp(planes, 1L, long(kMaxPlanes));
+    // The quality fields multiply: planes x samples per plane is what each ray takes, bounded
+    // as a total (numPlanes 100000 with samplesPerPlane 256 would take 25.6M samples a ray).
+    planes = std::min(planes, std::max(1L, long(limits::maxSamplesPerRay) / long(slabSamples)));
     return PlaneLayout::over(local.boxDepth,
                              std::max(depthExtent, 1e-12) / double(planes) * (1.0 + 1e-9));
 }

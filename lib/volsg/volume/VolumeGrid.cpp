@@ -1,5 +1,7 @@
 #include <volsg/volume/VolumeGrid.h>
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -41,11 +43,22 @@ std::size_t voxelTypeSize(VoxelType type) {
 
 namespace {
 
+std::string shortNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
 void checkSpacing(const glm::dvec3& s) {
+    // Bounded, not only positive: the GL paths work in single precision, where a box of
+    // 1e18-unit voxels (or 1e-18) loses every digit and shows nothing while the reference in
+    // double precision would show it. Every path refuses such a volume alike.
     for (int a = 0; a < 3; ++a)
-        if (!std::isfinite(s[a]) || !(s[a] > 0.0))
-            throw Error("volume spacing must be finite and > 0, got " + std::to_string(s.x) + " " +
-                        std::to_string(s.y) + " " + std::to_string(s.z));
+        if (!std::isfinite(s[a]) || !(s[a] >= limits::minVolumeSpacing) ||
+            !(s[a] <= limits::maxVolumeSpacing))
+            throw Error("volume spacing must be in [" + shortNumber(limits::minVolumeSpacing) +
+                        ", " + shortNumber(limits::maxVolumeSpacing) + "], got " +
+                        shortNumber(s.x) + " " + shortNumber(s.y) + " " + shortNumber(s.z));
 }
 
 std::string dimensionsText(glm::ivec3 d) {

@@ -11,6 +11,7 @@
 
 #include <volsg/core/Error.h>
 #include <volsg/io/AtomicFile.h>
+#include <volsg/io/RegularFile.h>
 #include <volsg/voxelfile/PositionCoding.h>
 
 namespace volsg {
@@ -386,6 +387,8 @@ VoxelFileContent readVoxelFile(std::span<const std::byte> bytes, const std::stri
 }
 
 VoxelFileContent readVoxelFileFromPath(const std::string& path) {
+    // Checked before opening: a FIFO would block the open until a writer came.
+    regularFileSize(path, "cannot read voxel file", maxVoxelFileSize);
     std::ifstream file(path, std::ios::binary);
     if (!file) throw Error("cannot open voxel file", path);
     std::error_code ec;

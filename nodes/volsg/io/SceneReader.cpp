@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -88,7 +89,8 @@ bool isNodeField(const Field& f) {
 class SceneParser final : public FieldInput {
 public:
     SceneParser(std::string_view text, const std::string& fileName, ReadContext context)
-        : tokens_(text, fileName), context_(std::move(context)) {}
+        : tokens_(text, fileName), context_(std::move(context)),
+          fileName_(std::make_shared<const std::string>(fileName)) {}
 
     ref_ptr<Node> readFile() {
         std::vector<ref_ptr<Node>> roots;
@@ -189,6 +191,7 @@ private:
             node = u;
         }
         if (!defName.empty()) node->setName(nodeNameFromDefName(defName));
+        node->setSourcePlace({fileName_, typeToken.line, typeToken.column});
         if (described) readFieldDescription(*node, unknown, typeName);
 
         std::vector<ref_ptr<Node>>* children = node->children();
@@ -318,6 +321,7 @@ private:
 
     Tokenizer tokens_;
     ReadContext context_;
+    std::shared_ptr<const std::string> fileName_; ///< shared by every node's SourcePlace
     std::unordered_map<std::string, ref_ptr<Node>> defined_;
     int depth_ = 0;
     std::size_t nodeCount_ = 0;

@@ -1,6 +1,8 @@
 #pragma once
 // Cameras: where the scene is seen from. The first camera met in traversal order sets the view
 // (its model matrix applies to it).
+#include <string>
+
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
 #include <volsg/math/Box3.h>
@@ -32,12 +34,21 @@ public:
     /// Eye to clip for a viewport of this width/height (ADJUST_CAMERA: the view is widened,
     /// never cropped, to fill it).
     virtual glm::dmat4 projectionMatrix(double viewportAspect) const = 0;
+    /// Throws Error (naming this camera and, when it was read from a file, its place) for a
+    /// camera no renderer can draw with: a field that is not finite, far not beyond near, a
+    /// perspective camera with near <= 0 or heightAngle outside (0, pi), an orthographic one
+    /// with height <= 0, or a model matrix `model` that is singular or not finite. Every render
+    /// path (GL and the reference ray caster) asks this first, so they agree on what a
+    /// degenerate camera is.
+    void check(const glm::dmat4& model = glm::dmat4(1.0)) const;
     /// Moves the camera (keeping its orientation) so that the box fills the view; sets near,
     /// far and focal distances around it (Inventor's viewAll).
     virtual void viewAll(const Box3& box, double viewportAspect) = 0;
 
 protected:
     ~Camera() override = default;
+    /// What is wrong with this kind of camera's own fields (empty: nothing).
+    virtual std::string problem() const;
 };
 
 class PerspectiveCamera : public Inherit<Camera, PerspectiveCamera> {
@@ -51,6 +62,7 @@ public:
 
 protected:
     ~PerspectiveCamera() override = default;
+    std::string problem() const override;
 };
 
 class OrthographicCamera : public Inherit<Camera, OrthographicCamera> {
@@ -64,6 +76,7 @@ public:
 
 protected:
     ~OrthographicCamera() override = default;
+    std::string problem() const override;
 };
 
 } // namespace volsg

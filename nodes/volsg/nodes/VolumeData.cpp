@@ -130,13 +130,26 @@ Box3 VolumeData::localBounds() const {
     return box;
 }
 
+void VolumeData::loadIfChanged() const {
+    if (loadedVersion_ == version()) return;
+    try {
+        load();
+    } catch (const Error& e) {
+        // Said of this node where it stands in the scene file (the error itself may name the
+        // data file), wherever the traversal that needed the data was.
+        if (e.namesSceneNode() || !sourcePlace().file) throw;
+        throw Error::atSceneNode(e, description(), *sourcePlace().file, sourcePlace().line,
+                                 sourcePlace().column);
+    }
+}
+
 ref_ptr<const VolumeGrid> VolumeData::grid() const {
-    if (loadedVersion_ != version()) load();
+    loadIfChanged();
     return grid_;
 }
 
 ref_ptr<const VolumeGrid> VolumeData::tagGrid() const {
-    if (loadedVersion_ != version()) load();
+    loadIfChanged();
     return tags_;
 }
 

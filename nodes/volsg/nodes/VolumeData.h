@@ -1,6 +1,7 @@
 #pragma once
 // VolumeData: the voxels (and optional labels) that the Volume and ShearWarpVolume nodes after
-// it in scope render. Read from a file (docs/SCENE-FORMAT.md section 3) or generated (test volumes).
+// it in scope render. Read from a file (docs/SCENE-FORMAT.md section 3) or generated (test
+// volumes).
 #include <string>
 
 #include <volsg/core/Node.h>
@@ -68,6 +69,7 @@ private:
     mutable ref_ptr<const VolumeGrid> grid_, tags_;
     mutable std::uint64_t loadedVersion_ = 0;
     void load() const;
+    void loadIfChanged() const; ///< load() once per version, errors said of this node
 };
 
 } // namespace volsg

@@ -4,7 +4,11 @@
 #include <volsg/render/RenderAction.h>
 
 #include <algorithm>
+#include <string>
+
 #include <cmath>
+#include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 
 namespace volsg {
 
@@ -19,6 +23,12 @@ ActionMethods& RenderAction::methods() {
 
 void RenderAction::dispatch(Node& node) {
     methods().apply(*this, node);
+}
+
+void RenderAction::countVolumeInstance() {
+    if (++frame_.volumeInstances > limits::maxVolumeInstances)
+        throw Error("more than " + std::to_string(limits::maxVolumeInstances) +
+                    " volume instances in one frame (every USE of a volume draws it again)");
 }
 
 void RenderAction::lightsInScope(std::vector<SceneLight>& out) const {

@@ -33,6 +33,10 @@ public:
     const glm::dmat4& viewMatrix() const { return frame_.view.view; }
     const glm::dmat4& projectionMatrix() const { return frame_.view.projection; }
 
+    /// Counts one more volume drawn in this frame; throws Error past limits::maxVolumeInstances
+    /// (each volume costs a whole pass over its data: 100,000 USEs of one would never end).
+    void countVolumeInstance();
+
     /// The lights in scope at the current node (plus the headlight when the scene has no
     /// light), in world coordinates. Fills `out` (cleared first) to reuse its memory.
     void lightsInScope(std::vector<SceneLight>& out) const;

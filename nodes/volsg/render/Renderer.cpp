@@ -3,8 +3,8 @@
 #include <volsg/gl/GlDebug.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/Light.h>
-#include <volsg/render/RenderCache.h>
 #include <volsg/render/RenderAction.h>
+#include <volsg/render/RenderCache.h>
 #include <volsg/render/RenderTarget.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/render/ShapeRenderer.h>
@@ -137,6 +137,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
         scene = {ref_ptr<Camera>(survey.camera()), survey.cameraModel()};
     else
         scene = makeViewAllCamera(root, aspect);
+    scene.camera->check(scene.model);
 
     RenderView view;
     view.view = scene.camera->viewMatrix(scene.model);
@@ -164,8 +165,14 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
 
     if (!inViewGroup) cache.beginFrame();
     shapes.beginFrame(view);
-    FrameContext frame{cache,    shapes,  target, view, RenderPass::Opaque, options.interactive,
-                       options.interactivePlaneScale, options.debug};
+    FrameContext frame{cache,
+                       shapes,
+                       target,
+                       view,
+                       RenderPass::Opaque,
+                       options.interactive,
+                       options.interactivePlaneScale,
+                       options.debug};
     RenderAction action(frame);
     for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
         // The multisampled opaque pass is resolved into the target for everything after it.

@@ -17,6 +17,7 @@ namespace {
 
 void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
     if (action.pass() != RenderPass::Volume) return;
+    action.countVolumeInstance();
     const State& state = action.state();
     std::vector<VolumeObject*> sources;
     std::vector<ShearWarpObject> objects = gatherShearWarpObjects(node, state, &sources);

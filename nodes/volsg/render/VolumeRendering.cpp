@@ -38,6 +38,7 @@ SlicingSettings slicingSettings(const Volume& volume, const State& state,
 
 void renderVolume(RenderAction& action, Volume& node) {
     if (action.pass() != RenderPass::Volume) return;
+    action.countVolumeInstance();
     // The node's share of the per-frame CPU time: gathering its state (added to the slicer's).
     const auto started = std::chrono::steady_clock::now();
     const State& state = action.state();

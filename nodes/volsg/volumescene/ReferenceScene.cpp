@@ -25,7 +25,8 @@ protected:
     void dispatch(Node& node) override {
         // Before its doAction: the state nodes among its children are scoped to it.
         if (node.isA<ShearWarpVolume>())
-            volumes.push_back(describeShearWarpVolume(static_cast<ShearWarpVolume&>(node), state()));
+            volumes.push_back(
+                describeShearWarpVolume(static_cast<ShearWarpVolume&>(node), state()));
         node.doAction(*this);
         if (node.isA<Volume>())
             volumes.push_back(describeVolume(static_cast<const Volume&>(node), state()));
@@ -63,6 +64,7 @@ RayCastCamera referenceCamera(Node& root, const RenderOptions& options) {
     // The same camera, and the same projection for this viewport, as the GL Renderer uses.
     const SceneCamera scene = options.camera ? SceneCamera{options.camera, glm::dmat4(1.0)}
                                              : findOrMakeCamera(root, aspect);
+    scene.camera->check(scene.model); // the GL renderer refuses the same cameras
     RayCastCamera camera;
     camera.view = scene.camera->viewMatrix(scene.model);
     camera.projection = scene.camera->projectionMatrix(aspect);

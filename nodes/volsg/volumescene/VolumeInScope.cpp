@@ -1,5 +1,6 @@
 #include <volsg/volumescene/VolumeInScope.h>
 
+#include <cmath>
 #include <string>
 
 #include <volsg/core/Error.h>
@@ -33,6 +34,16 @@ VolumeInScope gatherScopeWithoutData(const State& state) {
     VolumeInScope out;
     out.dataOwner = state.nearestNode<VolumeData>();
     out.model = state.modelMatrix();
+    // Every volume path maps rays into the volume through the inverse: a flattening or
+    // non-finite transform is refused alike by all of them (the reference always did).
+    bool finite = true;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            finite = finite && std::isfinite(out.model[c][r]);
+    const double det = glm::determinant(glm::dmat3(out.model));
+    if (!finite || !std::isfinite(det) || det == 0.0)
+        throw Error("the transform above the volume is singular or not finite (a zero or "
+                    "non-finite scale)");
 
     // Outermost first, so a later TransferFunction of the same tag replaces an earlier one.
     // The keys follow the nodes and their versions, so tables are rebuilt exactly when one of

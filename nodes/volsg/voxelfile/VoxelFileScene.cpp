@@ -9,6 +9,7 @@
 
 #include <volsg/actions/Action.h>
 #include <volsg/core/Error.h>
+#include <volsg/io/RegularFile.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/io/SceneWriter.h>
 #include <volsg/nodes/ShearWarpVolume.h>
@@ -71,7 +72,8 @@ private:
             throw Error("volsg-pack: a ShearWarpVolume draws from voxelFile '" +
                         volume.voxelFile() + "' already: pack the scene with the volume");
         std::vector<VolumeObject*> sources;
-        const std::vector<ShearWarpObject> gathered = gatherShearWarpObjects(volume, state(), &sources);
+        const std::vector<ShearWarpObject> gathered =
+            gatherShearWarpObjects(volume, state(), &sources);
         std::vector<PackedObject> out;
         const VolumeData* data = state().nearestNode<VolumeData>();
         if (!data || !data->grid())
@@ -135,6 +137,8 @@ ref_ptr<Node> readVoxelFileScene(const std::string& path) {
 }
 
 ref_ptr<Node> readSceneOrVoxelFile(const std::string& path) {
+    // A regular file first: opening a FIFO to sniff its magic would block until a writer came.
+    regularFileSize(path, "cannot read scene file", maxSceneFileSize);
     std::array<std::byte, 8> head{};
     std::ifstream file(path, std::ios::binary);
     file.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));

@@ -1,0 +1,175 @@
+// Valid but hostile scenes (tests/BAD-INPUT.md, "Extreme values", "Totals", "Instances",
+// "Degenerate cameras"): each renders or is refused with one line naming the scene file and
+// the node, never a crash, a hang or an unbounded allocation; the GL renderer and the
+// reference ray caster agree on which.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include <volsg/context/OSMesaContext.h>
+#include <volsg/core/Error.h>
+#include <volsg/image/Image.h>
+#include <volsg/io/SceneReader.h>
+#include <volsg/render/Renderer.h>
+#include <volsg/volumescene/ReferenceScene.h>
+
+using namespace volsg;
+
+namespace {
+
+const std::string kHeader = "#Inventor V2.1 ascii\n";
+const std::string kSphere =
+    "VolumeData { generator SOFT_SPHERE dimensions 16 16 16 }\nTransferFunction { }\n";
+
+std::string shearWarpScene(const std::string& before, const std::string& fields = "") {
+    return kHeader + "Separator {\n" + before + "\n" + kSphere + "ShearWarpVolume { " + fields +
+           " VolumeObject { } }\n}\n";
+}
+
+std::string volumeScene(const std::string& before, const std::string& fields = "") {
+    return kHeader + "Separator {\n" + before + "\n" + kSphere + "Volume { " + fields + " }\n}\n";
+}
+
+const std::string kOrtho = "OrthographicCamera { position 0 0 5 height 4 }";
+
+/// What a render of the scene text does: "" when it draws, else the error's message.
+struct Outcome {
+    std::string gl, reference;
+};
+
+Outcome renderBoth(const std::string& text, bool reference = true) {
+    Outcome out;
+    const ref_ptr<Node> root = readSceneFromString(text, "hostile.iv");
+    RenderOptions options;
+    options.width = options.height = 32;
+    Renderer renderer;
+    try {
+        (void)renderer.render(*root, options);
+    } catch (const Error& e) {
+        out.gl = e.what();
+    }
+    if (!reference) return out;
+    try {
+        RayCastOptions rays;
+        rays.tolerance = 1e-2;
+        (void)renderReference(*root, options, nullptr, rays);
+    } catch (const Error& e) {
+        out.reference = e.what();
+    }
+    return out;
+}
+
+/// Refused by both paths, each naming the scene file and the node at fault.
+void checkRefusedByBoth(const Outcome& o, const std::string& node, const std::string& why) {
+    CAPTURE(o.gl);
+    CAPTURE(o.reference);
+    CHECK(o.gl.rfind("hostile.iv:", 0) == 0);
+    CHECK(o.gl.find(node) != std::string::npos);
+    CHECK(o.gl.find(why) != std::string::npos);
+    CHECK(o.reference.rfind("hostile.iv:", 0) == 0);
+    CHECK(o.reference.find(why) != std::string::npos);
+}
+
+} // namespace
+
+TEST_CASE("degenerate cameras are refused by the GL renderer and the reference alike") {
+    OSMesaContext context;
+    struct Case {
+        const char* camera;
+        const char* why;
+    };
+    for (const Case& c : {
+             Case{"OrthographicCamera { position 0 0 5 height 0 }", "height > 0"},
+             Case{"PerspectiveCamera { position 0 0 5 nearDistance 0 }", "nearDistance > 0"},
+             Case{"PerspectiveCamera { position 0 0 5 heightAngle 0 }", "heightAngle"},
+             Case{"PerspectiveCamera { position 0 0 5 nearDistance 10 farDistance 1 }",
+                  "beyond nearDistance"},
+             Case{"Transform { scaleFactor 0 1 1 } PerspectiveCamera { position 0 0 5 }",
+                  "singular"},
+         }) {
+        CAPTURE(c.camera);
+        checkRefusedByBoth(renderBoth(volumeScene(c.camera)), "Camera", c.why);
+        checkRefusedByBoth(renderBoth(shearWarpScene(c.camera)), "Camera", c.why);
+    }
+}
+
+TEST_CASE("extreme but valid views render without crashing, on both paths") {
+    OSMesaContext context;
+    for (const char* before : {
+             "OrthographicCamera { position 0 0 5 height 1e17 }",
+             "OrthographicCamera { position 0 0 5 height 1e-12 }",
+             "OrthographicCamera { position 0 0 5 height 4 } Transform { translation 1e16 0 0 }",
+             "OrthographicCamera { position 0 0 5 height 4 } Transform { scaleFactor 1e-15 1e-15 "
+             "1e-15 }",
+             "OrthographicCamera { position 1e30 0 5 height 4 }",
+         }) {
+        CAPTURE(before);
+        const Outcome sw = renderBoth(shearWarpScene(before), false);
+        CHECK(sw.gl.empty());
+        const Outcome v = renderBoth(volumeScene(before), false);
+        CHECK(v.gl.empty());
+    }
+}
+
+TEST_CASE("a flattening transform above a volume is refused by every volume path") {
+    OSMesaContext context;
+    const std::string flat = kOrtho + " Transform { scaleFactor 1 1 0 }";
+    checkRefusedByBoth(renderBoth(volumeScene(flat)), "Volume", "singular");
+    checkRefusedByBoth(renderBoth(shearWarpScene(flat)), "ShearWarpVolume", "singular");
+}
+
+TEST_CASE("thread counts are clamped to the cores, not obeyed") {
+    OSMesaContext context;
+    CHECK(renderBoth(shearWarpScene(kOrtho, "threads 2147483647"), false).gl.empty());
+}
+
+TEST_CASE("USE chains that multiply instances stop at the traversal's instance total") {
+    OSMesaContext context;
+    // 41 Separators, each USEing the one before twice: 2^40 paths to the cube.
+    std::string text = kHeader + "Separator {\nDEF S0 Separator { Cube { } }\n";
+    for (int i = 1; i <= 40; ++i)
+        text += "DEF S" + std::to_string(i) + " Separator { USE S" + std::to_string(i - 1) +
+                " USE S" + std::to_string(i - 1) + " }\n";
+    text += "}\n";
+    const Outcome o = renderBoth(text, false);
+    CAPTURE(o.gl);
+    CHECK(o.gl.rfind("hostile.iv:", 0) == 0);
+    CHECK(o.gl.find("node instances") != std::string::npos);
+}
+
+TEST_CASE("100,000 USEs of one volume stop at the frame's volume total") {
+    OSMesaContext context;
+    std::string text = kHeader + "Separator {\n" + kSphere + "DEF V Volume { }\n";
+    for (int i = 0; i < 100000; ++i)
+        text += "USE V\n";
+    text += "}\n";
+    const Outcome o = renderBoth(text, false);
+    CAPTURE(o.gl);
+    CHECK(o.gl.rfind("hostile.iv:", 0) == 0);
+    CHECK(o.gl.find("volume instances") != std::string::npos);
+}
+
+TEST_CASE("quality fields are bounded as a product, and a tiny texture budget gets at most 16 "
+          "bricks an axis") {
+    OSMesaContext context;
+    CHECK(
+        renderBoth(volumeScene(kOrtho, "numPlanes 100000 samplesPerPlane 256"), false).gl.empty());
+    CHECK(renderBoth(volumeScene(kOrtho, "textureBudget 1"), false).gl.empty());
+}
+
+TEST_CASE("volume spacings beyond single precision are refused when the data loads") {
+    OSMesaContext context;
+    for (const char* spacing : {"1e18 1e18 1e18", "1e-15 1 1"}) {
+        CAPTURE(spacing);
+        const std::string text = kHeader + "Separator { " + kOrtho +
+                                 " VolumeData { generator SOFT_SPHERE " +
+                                 "dimensions 8 8 8 spacing " + spacing + " } Volume { } }\n";
+        checkRefusedByBoth(renderBoth(text), "VolumeData", "volume spacing must be in");
+    }
+}
+
+TEST_CASE("messages are bounded in length") {
+    const Error e(std::string(3 << 20, 'x'), "file.iv", 1, 1);
+    CHECK(std::string(e.what()).size() <= Error::kMaxMessageLength);
+    CHECK(std::string(e.what()).rfind("file.iv:1:1: xxx", 0) == 0);
+}
