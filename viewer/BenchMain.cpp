@@ -301,86 +301,50 @@ int nodeSuite(const Settings& st) {
     return 0;
 }
 
-int run(int argc, char** argv) {
-    cli::Arguments args(argc, argv);
+int run(cli::Arguments& args) {
     Settings st;
-    while (!args.empty()) {
-        const std::string a = args.take();
-        if (a == "--frames") {
-            st.frames = args.intValue(a, 1, 100000);
-            st.framesGiven = true;
-        } else if (a == "--size") {
-            const glm::ivec2 s = cli::parseSize(args.value(a));
-            st.options.width = s.x;
-            st.options.height = s.y;
-            st.sizeGiven = true;
-        } else if (a == "--error")
-            st.error = true;
-        else if (a == "--interactive")
-            st.options.interactive = true;
-        else if (a == "--error-frames") {
-            st.errorFrames = args.intValue(a, 1, 100000);
-            st.errorFramesGiven = true;
-        } else if (a == "--tolerance")
-            st.tolerance = parseTolerance(args.value(a));
-        else if (a == "--planes")
-            for (const std::string& p : splitList(args.value(a)))
-                st.planes.push_back(parsePositive(p, "--planes"));
-        else if (a == "--cases")
-            st.cases = splitList(args.value(a));
-        else if (a == "--kinds")
-            st.kinds = splitList(args.value(a));
-        else if (a == "--planes-only")
-            st.planesOnly = true;
-        else if (a == "--samples-per-plane")
-            st.samplesPerPlane = args.intValue(a, 1, 256);
-        else if (a == "--no-mip-peaks")
-            st.mipPeaks = false;
-        else if (a == "--scenes")
-            st.scenesDir = args.value(a);
-        else if (a == "--reference-dir")
-            st.referenceDir = args.value(a);
-        else if (a == "--export-views")
-            st.exportDir = args.value(a);
-        else if (a == "--compare")
-            st.compareDir = args.value(a);
-        else if (a == "--rows")
-            st.rowsCsv = args.value(a);
-        else if (a == "--csv")
-            st.csv = args.value(a);
-        else if (a == "--plot")
-            st.plot = args.value(a);
-        else if (a == "--volume-side") {
-            st.volumeSide = args.intValue(a, 2, 1024);
-            st.volumeSideGiven = true;
-        } else if (a == "--budget")
-            st.budgetMegabytes = parsePositive(args.value(a), "--budget");
-        else if (a == "--background")
-            st.options.background = cli::parseColor(args.value(a));
-        else if (a == "--backend")
-            st.backend = parseBackend(args.value(a));
-        else if (a == "--suite")
-            st.suite = args.value(a);
-        else if (a == "--nodes")
-            st.nodes = args.intValue(a, 4, 10000000);
-        else if (a == "--side")
-            st.side = args.intValue(a, 1, 1000);
-        else if (a == "--keep")
-            st.keepDir = args.value(a);
-        else if (a == "-h" || a == "--help") {
-            std::fputs(usage, stdout);
-            return 0;
-        } else if (!a.empty() && a[0] == '-')
-            throw Error("unknown option '" + a + "'");
-        else if (st.scene.empty())
-            st.scene = a;
-        else
-            throw Error("more than one scene file given");
-    }
-    if (st.scene.empty() == st.suite.empty()) {
-        std::fputs(usage, stderr);
-        return 2;
-    }
+    const auto list = [](std::vector<std::string>& target) {
+        return [&target](const std::string& v) { target = splitList(v); };
+    };
+    cli::Options table;
+    table.integer("--frames", st.frames, 1, 100000, &st.framesGiven)
+        .size("--size", st.options.width, st.options.height, &st.sizeGiven)
+        .flag("--error", st.error)
+        .flag("--interactive", st.options.interactive)
+        .integer("--error-frames", st.errorFrames, 1, 100000, &st.errorFramesGiven)
+        .value("--tolerance", [&](const std::string& v) { st.tolerance = parseTolerance(v); })
+        .value("--planes",
+               [&](const std::string& v) {
+                   for (const std::string& p : splitList(v))
+                       st.planes.push_back(parsePositive(p, "--planes"));
+               })
+        .value("--cases", list(st.cases))
+        .value("--kinds", list(st.kinds))
+        .flag("--planes-only", st.planesOnly)
+        .integer("--samples-per-plane", st.samplesPerPlane, 1, 256)
+        .flag("--no-mip-peaks", st.mipPeaks, false)
+        .text("--scenes", st.scenesDir)
+        .text("--reference-dir", st.referenceDir)
+        .text("--export-views", st.exportDir)
+        .text("--compare", st.compareDir)
+        .text("--rows", st.rowsCsv)
+        .text("--csv", st.csv)
+        .text("--plot", st.plot)
+        .integer("--volume-side", st.volumeSide, 2, 1024, &st.volumeSideGiven)
+        .value("--budget",
+               [&](const std::string& v) { st.budgetMegabytes = parsePositive(v, "--budget"); })
+        .color("--background", st.options.background)
+        .value("--backend", [&](const std::string& v) { st.backend = parseBackend(v); })
+        .text("--suite", st.suite)
+        .integer("--nodes", st.nodes, 4, 10000000)
+        .integer("--side", st.side, 1, 1000)
+        .text("--keep", st.keepDir);
+    const auto scene = [&](const std::string& a) {
+        if (!st.scene.empty()) throw Error("more than one scene file given");
+        st.scene = a;
+    };
+    if (!table.read(args, usage, scene)) return 0;
+    if (st.scene.empty() == st.suite.empty()) return cli::usageError(usage);
     if (!st.scene.empty()) return sceneBenchmark(st);
     if (st.suite == "volumes") {
         bench::VolumeSuiteSettings vs;
@@ -449,10 +413,5 @@ int run(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "volsg-bench: %s\n", e.what());
-        return 1;
-    }
+    return volsg::cli::runTool("volsg-bench", argc, argv, run);
 }
