@@ -52,6 +52,8 @@ const char* usage =
     "                   [--reference-dir DIR] [--compare DIR [--rows CSV]] [--keep DIR]\n"
     "                   [--csv FILE] [--plot FILE.svg]\n"
     "       volsg-bench --suite node --export-views DIR [--size WxH] [--frames N] ...\n"
+    "       every form also takes the debug switches [--no-empty-cells]\n"
+    "                   [--no-texture-staging] [--max-3d-texture N] [--scalar-kernels]\n"
     "  --error         also compare K of the frames with the reference ray caster (same\n"
     "                  views, same size): RMSE, PSNR and max abs error\n"
     "  --error-frames  how many frames to compare (default: all, at most 4)\n"
@@ -75,7 +77,15 @@ const char* usage =
     "                  vtk_volume_bench.py) with their error on the same views, and the\n"
     "                  side-by-side table at equal error\n"
     "  --rows CSV      take the Volume node's rows from the CSV of an earlier node-suite run\n"
-    "                  instead of timing them again\n";
+    "                  instead of timing them again\n"
+    "  debug switches: an optimisation off, to measure what it saves (RenderOptions::debug)\n"
+    "  --no-empty-cells      Volume: draw the 8^3 cells the transfer function shows nothing of\n"
+    "  --no-texture-staging  Volume: upload each VolumeSeries step directly, not staged in a\n"
+    "                        pixel buffer while the one before shows\n"
+    "  --max-3d-texture N    Volume: bricks of at most N texels a side (below the driver's\n"
+    "                        GL_MAX_3D_TEXTURE_SIZE)\n"
+    "  --scalar-kernels      ShearWarpVolume: the scalar kernels, not the widest vector ones\n"
+    "                        this CPU runs\n";
 
 struct Settings {
     std::string scene, suite, keepDir, csv, plot;
@@ -276,6 +286,7 @@ int nodeSuite(const Settings& st) {
     if (st.tolerance > 0.0) ns.tolerance = st.tolerance;
     if (!st.planes.empty()) ns.planesPerVoxel = st.planes;
     ns.background = st.options.background;
+    ns.debug = st.options.debug;
     ns.backend = st.backend;
     ns.scenesDir = st.scenesDir;
     ns.cases = st.cases;
@@ -338,7 +349,12 @@ int run(cli::Arguments& args) {
         .text("--suite", st.suite)
         .integer("--nodes", st.nodes, 4, 10000000)
         .integer("--side", st.side, 1, 1000)
-        .text("--keep", st.keepDir);
+        .text("--keep", st.keepDir)
+        // Debug switches: RenderOptions::debug.
+        .flag("--no-empty-cells", st.options.debug.skipEmptyCells, false)
+        .flag("--no-texture-staging", st.options.debug.textureStaging, false)
+        .integer("--max-3d-texture", st.options.debug.max3DTextureSize, 2, 16384)
+        .flag("--scalar-kernels", st.options.debug.vectorKernels, false);
     const auto scene = [&](const std::string& a) {
         if (!st.scene.empty()) throw Error("more than one scene file given");
         st.scene = a;
@@ -356,6 +372,7 @@ int run(cli::Arguments& args) {
         vs.errorFrames = std::min(st.errorFrames, vs.frames);
         vs.side = st.volumeSide;
         vs.background = st.options.background;
+        vs.debug = st.options.debug;
         vs.backend = st.backend;
         vs.keepDir = st.keepDir;
         const std::vector<bench::BenchRow> rows = bench::runVolumeSuite(vs);
@@ -396,12 +413,15 @@ int run(cli::Arguments& args) {
             }
         }
         ss.backend = st.backend;
+        ss.debug = st.options.debug;
         return bench::runSeriesSuite(ss);
     }
-    if (st.suite == "rtvr") // exit code 1 when no row was measured
-        return bench::runRtvrSuite(
-                   {st.options.width, st.options.height, st.frames, st.backend, st.keepDir, {}})
-            .empty();
+    if (st.suite == "rtvr") { // exit code 1 when no row was measured
+        const bench::RtvrSuiteSettings rs{st.options.width, st.options.height, st.frames,
+                                          st.backend,       st.keepDir,        {},
+                                          st.options.debug};
+        return bench::runRtvrSuite(rs).empty();
+    }
     if (st.suite == "parse" || st.suite == "all") parseSuite(st);
     if (st.suite == "traversal" || st.suite == "all") traversalSuite(st);
     if (st.suite != "parse" && st.suite != "traversal" && st.suite != "all")
