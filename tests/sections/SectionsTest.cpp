@@ -150,9 +150,8 @@ TransferFunction1D colourful(std::vector<PiecewiseLinear::Point> alpha) {
 
 } // namespace
 
-TEST_CASE("orthoslice pixels equal double precision sampling of the same world point") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "orthoslice pixels equal double precision sampling of the same world point") {
     SliceScene scene(VolumeData::MARSCHNER_LOBB, glm::vec3(32.0f), colourful({{0, 0.3}, {1, 1}}));
     auto slice = OrthoSlice::create();
     slice->axis = OrthoSlice::Y;
@@ -205,9 +204,8 @@ TEST_CASE("the sampler replaces non-finite float voxels by the finite extremes")
     CHECK(t.rgba.r == doctest::Approx(0.5).epsilon(1e-12));
 }
 
-TEST_CASE("obliqueslice is trilinear with anisotropic spacing under a transform") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "obliqueslice is trilinear with anisotropic spacing under a transform") {
     SliceScene scene(VolumeData::SOFT_SPHERE, glm::vec3(24.0f), colourful({{0, 0.3}, {1, 1}}));
     scene.data->spacing = glm::vec3(1.0f, 1.5f, 0.75f);
     auto transform = Transform::create();
@@ -229,9 +227,7 @@ TEST_CASE("obliqueslice is trilinear with anisotropic spacing under a transform"
     CHECK(c.maxError <= k8Bit);
 }
 
-TEST_CASE("a 16-bit slice matches within the transfer table resolution") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a 16-bit slice matches within the transfer table resolution") {
     TransferFunction1D tf = colourful({{0, 0.5}, {1, 1}});
     tf.setDataRange(10000.0, 50000.0);
     SliceScene scene(VolumeData::RAMP16, glm::vec3(40.0f, 16.0f, 16.0f), tf);
@@ -251,9 +247,7 @@ TEST_CASE("a 16-bit slice matches within the transfer table resolution") {
     CHECK(c.maxError <= kTableStep);
 }
 
-TEST_CASE("a float slice matches with the data's own range") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a float slice matches with the data's own range") {
     SliceScene scene(VolumeData::SOFT_SPHERE, glm::vec3(24.0f), colourful({{0, 0.5}, {1, 1}}));
     scene.data->dataType = VolumeData::FLOAT;
     auto slice = ObliqueSlice::create();
@@ -270,9 +264,7 @@ TEST_CASE("a float slice matches with the data's own range") {
     CHECK(c.maxError <= kTableStep);
 }
 
-TEST_CASE("a tagged slice uses the transfer function of each voxel's tag") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a tagged slice uses the transfer function of each voxel's tag") {
     SliceScene scene(VolumeData::LABELLED, glm::vec3(24.0f), colourful({{0, 0.4}, {1, 1}}));
     auto inner = TransferFunction::create();
     inner->tag = 1;
@@ -301,9 +293,9 @@ TEST_CASE("a tagged slice uses the transfer function of each voxel's tag") {
     CHECK(c.maxError <= k8Bit);
 }
 
-TEST_CASE("alpha binary discards transparent pixels and alpha as is blends over the background") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture,
+    "alpha binary discards transparent pixels and alpha as is blends over the background") {
     // Alpha 0 below v = 0.4 (a kink): binary draws only where the data exceeds it.
     SliceScene scene(VolumeData::SOFT_SPHERE, glm::vec3(24.0f),
                      colourful({{0, 0}, {0.4, 0}, {1, 0.8}}));
@@ -327,9 +319,8 @@ TEST_CASE("alpha binary discards transparent pixels and alpha as is blends over 
     }
 }
 
-TEST_CASE("a slice inside a volume is covered in front and hides the volume behind it") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "a slice inside a volume is covered in front and hides the volume behind it") {
     const ref_ptr<Node> root = readSceneFromString(R"(#Inventor V2.1 ascii
 Separator {
   PerspectiveCamera { position 0.6 0.5 2.0 orientation -0.6 0.8 0 0.35 heightAngle 0.75
@@ -361,9 +352,8 @@ Separator {
     CHECK(glm::length(glm::vec3(a) - glm::vec3(b)) > 0.05f);
 }
 
-TEST_CASE("a clipping orthoslice cuts the volume after it on its clipping side") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "a clipping orthoslice cuts the volume after it on its clipping side") {
     const std::string scene = R"(#Inventor V2.1 ascii
 Separator {
   PerspectiveCamera { position 0.4 0.8 2.0 orientation -1 0.3 0 0.4 heightAngle 0.75
@@ -467,9 +457,9 @@ TEST_CASE("a pick misses a slice where it is discarded and hits the nearer of sl
     CHECK(pickAt(centre)->voxel);
 }
 
-TEST_CASE("LightModel BASE_COLOR draws shapes unlit in their diffuse colour within its scope") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture,
+    "LightModel BASE_COLOR draws shapes unlit in their diffuse colour within its scope") {
     auto root = Separator::create();
     auto camera = perspectiveAt({0.0f, 0.0f, 6.0f}, 0.8f, 1.0f, 20.0f);
     root->addChild(camera);
@@ -514,9 +504,9 @@ TEST_CASE("LightModel BASE_COLOR draws shapes unlit in their diffuse colour with
     CHECK(std::abs(a.g - 0.5f) > 0.01f);
 }
 
-TEST_CASE("ResetTransform TRANSFORM resets the model matrix for render, pick and bounding box") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture,
+    "ResetTransform TRANSFORM resets the model matrix for render, pick and bounding box") {
     auto root = Separator::create();
     auto camera = perspectiveAt({0.0f, 0.0f, 8.0f}, 0.8f, 1.0f, 20.0f);
     root->addChild(camera);

@@ -34,9 +34,7 @@ ref_ptr<PerspectiveCamera> lookingAlong(const glm::vec3& eye, const glm::vec3& f
 
 } // namespace
 
-TEST_CASE("a volume wholly behind the camera leaves the background untouched") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a volume wholly behind the camera leaves the background untouched") {
     const RayCastVolume v = lumpyVolume();
     const glm::vec3 background(0.2f, 0.3f, 0.4f);
     // The eye is 40 units in front of the volume, looking away from it: the whole box is
@@ -56,9 +54,7 @@ TEST_CASE("a volume wholly behind the camera leaves the background untouched") {
     }
 }
 
-TEST_CASE("a volume half behind the camera shows only its part in front") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a volume half behind the camera shows only its part in front") {
     const RayCastVolume v = lumpyVolume();
     // The eye at the box centre looks out through the +x face: the -x half is behind it.
     auto camera = lookingAlong({0, 0, 0}, {1, 0.15f, 0.1f}, 1.4f, 0.25f, 100.0f);
@@ -67,9 +63,7 @@ TEST_CASE("a volume half behind the camera shows only its part in front") {
     checkSliced(c, 0.25, 1.0);
 }
 
-TEST_CASE("perspective at a 120 degree field of view matches the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "perspective at a 120 degree field of view matches the reference") {
     const RayCastVolume v = lumpyVolume();
     // Close enough that the box fills most of the 120 degree frustum: rays at the image
     // corners cross the planes at over 60 degrees, where the plane spacing along the ray is
@@ -82,9 +76,7 @@ TEST_CASE("perspective at a 120 degree field of view matches the reference") {
     }
 }
 
-TEST_CASE("a 120 degree view from inside the volume matches the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a 120 degree view from inside the volume matches the reference") {
     const RayCastVolume v = lumpyVolume();
     auto camera = perspectiveAt({2, -1, 4}, kDegrees120, 0.3f, 100.0f);
     const Comparison c = compareGrid(renderer, v, {}, *camera, 64);

@@ -27,9 +27,7 @@ SlicingSettings planesAndSamples(int planes, int samples) {
 
 } // namespace
 
-TEST_CASE("thick slabs from a camera inside the volume match the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "thick slabs from a camera inside the volume match the reference") {
     const RayCastVolume v = marschnerLobbVolume();
     // Inside the box (extent 17), looking at the origin with a wide lens.
     auto camera = perspectiveAt({2, -1, 4}, 1.6f, 0.3f, 100.0f);
@@ -38,9 +36,8 @@ TEST_CASE("thick slabs from a camera inside the volume match the reference") {
     checkSliced(compareGrid(renderer, v, four, *camera, 48), 0.5, 3.0, "4 samples per plane, ");
 }
 
-TEST_CASE("the same number of samples gives the same accuracy however planes split them") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "the same number of samples gives the same accuracy however planes split them") {
     const RayCastVolume v = marschnerLobbVolume();
     auto camera = framing(*v.data, {0.3f, 0.5f, 1.0f});
     const Comparison coarse = compareGrid(renderer, v, planesAndSamples(32, 1), *camera, 48);
@@ -55,9 +52,7 @@ TEST_CASE("the same number of samples gives the same accuracy however planes spl
     checkDifference(parts.difference, 0.5, 3.0, "32 planes x 4: ");
 }
 
-TEST_CASE("the automatic plane count divides by the samples per plane") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "the automatic plane count divides by the samples per plane") {
     const RayCastVolume v = marschnerLobbVolume();
     auto camera = framing(*v.data, {0.3f, 0.5f, 1.0f});
     SlicingSettings one;
@@ -70,9 +65,8 @@ TEST_CASE("the automatic plane count divides by the samples per plane") {
     CHECK(b.difference.rmse < k8Bit);
 }
 
-TEST_CASE("tags BoxClip planeOpacity and clip planes hold in every part of the slab") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "tags BoxClip planeOpacity and clip planes hold in every part of the slab") {
     RayCastVolume v =
         labelledVolume(20, {{-1, transferFunction({{0, 0}, {1, 0.3}}, {{0, 0.5}, {1, 0.5}})},
                             {1, transferFunction({{0, 0}, {1, 0.9}}, {{0, 1}, {1, 1}},
@@ -131,9 +125,7 @@ TEST_CASE("the lean slab loops give the general loops' image") {
     }
 }
 
-TEST_CASE("pre-integration takes each part of the slab as its own segment") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "pre-integration takes each part of the slab as its own segment") {
     // A spike 0.05 wide: post-classification misses it between samples.
     const RayCastVolume v = volumeOf(makeMarschnerLobb(17, VoxelType::UByte),
                                      transferFunction(spike(0.5, 0.525, 0.55), {{0, 0.2}, {1, 1}},
@@ -148,9 +140,7 @@ TEST_CASE("pre-integration takes each part of the slab as its own segment") {
     CHECK(b.difference.rmse < 5.0 * k8Bit);
 }
 
-TEST_CASE("MIP and MINIP on thick slabs still find thin peaks and dips") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "MIP and MINIP on thick slabs still find thin peaks and dips") {
     const RayCastVolume shell = thinShellMip();
     RayCastVolume lobb = marschnerLobbVolume();
     lobb.mode = VolumeRenderMode::MINIP;

@@ -52,9 +52,7 @@ Image renderScene(Renderer& renderer, Node& root, Camera& camera, int size,
 
 } // namespace
 
-TEST_CASE("tagged voxels use the transfer function of their tag") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "tagged voxels use the transfer function of their tag") {
     const int n = 24;
     NodeVolume scene(VolumeData::LABELLED, n,
                      transferFunction({{0, 0}, {1, 0.3}}, {{0, 0.5}, {1, 0.5}}));
@@ -89,9 +87,8 @@ TEST_CASE("tagged voxels use the transfer function of their tag") {
     CHECK(gl.at(24, 24).r > 2.0f * gl.at(24, 24).b);
 }
 
-TEST_CASE("a transfer function change rebuilds the table without uploading the volume again") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture, "a transfer function change rebuilds the table without uploading the volume again") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 20, transferFunction({{0, 0}, {1, 0.5}}));
     auto camera = framing(*scene.data->grid(), {0.0f, 0.0f, 1.0f});
     const Image first = renderScene(renderer, *scene.root, *camera, 32);
@@ -120,9 +117,7 @@ TEST_CASE("a transfer function change rebuilds the table without uploading the v
     CHECK(stats.transferTableBuilds == 3);
 }
 
-TEST_CASE("a bricked volume renders the same image as an unbricked one") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a bricked volume renders the same image as an unbricked one") {
     const RayCastVolume plain =
         volumeOf(makeGrid({30, 26, 22}, VoxelType::UByte, glm::dvec3(1.0, 1.2, 1.0), blob),
                  transferFunction({{0.1, 0}, {0.7, 0.7}}, {{0, 0.3}, {1, 1}}));
@@ -166,9 +161,7 @@ TEST_CASE("a bricked volume renders the same image as an unbricked one") {
     }
 }
 
-TEST_CASE("bricks beyond the budget are streamed: uploaded again each frame") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "bricks beyond the budget are streamed: uploaded again each frame") {
     auto root = Separator::create();
     auto node = GridVolume::create();
     node->description.data = makeSoftSphere(24, VoxelType::UByte);
@@ -197,9 +190,8 @@ TEST_CASE("bricks beyond the budget are streamed: uploaded again each frame") {
     CHECK(node->stats.brickUploads == second.brickUploads + 1);
 }
 
-TEST_CASE("bricks empty under the transfer function are neither uploaded nor drawn") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "bricks empty under the transfer function are neither uploaded nor drawn") {
     // Data only where x < 0: the bricks of the other half hold zeros, transparent under a
     // function whose alpha is 0 at v = 0.
     const auto halfBlob = [](const glm::dvec3& p) {
@@ -230,9 +222,7 @@ TEST_CASE("bricks empty under the transfer function are neither uploaded nor dra
     CHECK(c.difference.rmse < 0.25 * k8Bit);
 }
 
-TEST_CASE("ClipPlanes remove exactly the clipped side") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "ClipPlanes remove exactly the clipped side") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0.05}, {1, 0.8}}, {{0, 1}, {1, 0.3}}));
     // Two planes, one of them under a transform: both apply to the volume after them.
@@ -263,9 +253,7 @@ TEST_CASE("ClipPlanes remove exactly the clipped side") {
     CHECK(difference(gl, referenceImage(rayCamera(*camera, 48, 48), {whole})).max > 0.2);
 }
 
-TEST_CASE("BoxClip inside and outside opacity and colour match the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "BoxClip inside and outside opacity and colour match the reference") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0.1}, {1, 0.7}}, {{0, 1}, {1, 0.2}}));
     auto box = BoxClip::create();
@@ -309,9 +297,8 @@ TEST_CASE("BoxClip inside and outside opacity and colour match the reference") {
     }
 }
 
-TEST_CASE("planeOpacity scales extinction over view depth as the reference does") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "planeOpacity scales extinction over view depth as the reference does") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0.1}, {1, 0.8}}, {{0, 1}, {1, 0}}, {{0, 0}, {1, 1}}));
     scene.volume->planeOpacity = {glm::vec2(0, 0), glm::vec2(0.4f, 1), glm::vec2(0.7f, 0.2f),
@@ -325,9 +312,8 @@ TEST_CASE("planeOpacity scales extinction over view depth as the reference does"
     CHECK(difference(gl, referenceImage(rayCamera(*camera, 48, 48), {v})).max > 0.1);
 }
 
-TEST_CASE("an opaque cube inside the volume hides what is behind it and is dimmed in front") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture, "an opaque cube inside the volume hides what is behind it and is dimmed in front") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0.05}, {1, 0.5}}, {{0, 0.2}, {1, 0.2}},
                                       {{0, 0.4}, {1, 1}}, {{0, 1}, {1, 0.3}}));
@@ -375,9 +361,8 @@ TEST_CASE("an opaque cube inside the volume hides what is behind it and is dimme
     CHECK(centre.r < cubeAlone.at(size / 2, size / 2).r - 0.1f);
 }
 
-TEST_CASE("a camera inside the volume sees only what is in front of its near plane") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "a camera inside the volume sees only what is in front of its near plane") {
     const RayCastVolume v =
         volumeOf(makeGrid({24, 24, 24}, VoxelType::UByte, glm::dvec3(1.0), blob),
                  transferFunction({{0, 0.02}, {1, 0.3}}, {{0, 0.2}, {1, 1}}));
@@ -389,9 +374,7 @@ TEST_CASE("a camera inside the volume sees only what is in front of its near pla
     }
 }
 
-TEST_CASE("pre-integration cuts the error of a spiky transfer function") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "pre-integration cuts the error of a spiky transfer function") {
     // A thin opaque shell where the soft sphere crosses v = 0.5.
     const RayCastVolume v = volumeOf(makeSoftSphere(24, VoxelType::UShort),
                                      transferFunction(spike(0.47, 0.5, 0.53), {{0, 1}, {1, 1}},
@@ -413,9 +396,7 @@ TEST_CASE("pre-integration cuts the error of a spiky transfer function") {
     CHECK(b.difference.rmse < 2.0 * k8Bit);
 }
 
-TEST_CASE("lighting shades the side of the volume that faces the light") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "lighting shades the side of the volume that faces the light") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0}, {0.3, 0}, {0.35, 0.9}, {1, 0.9}}, {{0, 1}, {1, 1}},
                                       {{0, 1}, {1, 1}}, {{0, 1}, {1, 1}}));
@@ -442,9 +423,7 @@ TEST_CASE("lighting shades the side of the volume that faces the light") {
     CHECK(difference(lit, unlit).max > 0.2);
 }
 
-TEST_CASE("two volumes side by side match the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "two volumes side by side match the reference") {
     RayCastVolume a = volumeOf(makeSoftSphere(16, VoxelType::UByte),
                                transferFunction({{0, 0}, {1, 0.8}}, {{0, 1}, {1, 1}}));
     a.model = glm::translate(glm::dmat4(1.0), glm::dvec3(-10, 0, 0));
@@ -465,9 +444,8 @@ TEST_CASE("two volumes side by side match the reference") {
     checkDifference(difference(gl, ref), 0.25, 2.0);
 }
 
-TEST_CASE("tagged MIP carries each maximum's tag and BoxClip region to the composite") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "tagged MIP carries each maximum's tag and BoxClip region to the composite") {
     RayCastVolume v =
         labelledVolume(20,
                        {{-1, transferFunction({{0, 0}, {1, 1}}, {{0, 0.5}, {1, 0.5}})},
@@ -496,9 +474,7 @@ TEST_CASE("tagged MIP carries each maximum's tag and BoxClip region to the compo
     CHECK(c.gl.at(18, 24).b > c.gl.at(30, 24).b + 0.2f);
 }
 
-TEST_CASE("NEAREST interpolation shows each voxel's value unblended") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "NEAREST interpolation shows each voxel's value unblended") {
     // Opaque at the front face, 8 voxels along x: an orthographic view straight on shows
     // exactly 8 distinct reds with NEAREST and a smooth ramp with LINEAR.
     const RayCastVolume v = volumeOf(
@@ -525,9 +501,8 @@ TEST_CASE("NEAREST interpolation shows each voxel's value unblended") {
     CHECK(l.difference.max < 1.0 * k8Bit); // LINEAR is the reference's trilinear field
 }
 
-TEST_CASE("a scene file with clipping and a shape inside the volume matches renderReference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture, "a scene file with clipping and a shape inside the volume matches renderReference") {
     // The Volume's state gathered by the node and by collectVolumes() must agree: a Transform
     // between the BoxClip and the Volume, a ClipPlane under a Separator that ends before the
     // Volume (so it does not apply), a tagged function, an opaque cone inside.

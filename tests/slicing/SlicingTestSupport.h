@@ -33,6 +33,13 @@ namespace volsg::test {
 /// One step of 8-bit colour: the unit of the tests' error bounds.
 constexpr double k8Bit = 1.0 / 255.0;
 
+/// What most GL tests start with: a current offscreen context and a Renderer
+/// (TEST_CASE_FIXTURE(GlFixture, "...")).
+struct GlFixture {
+    OSMesaContext context;
+    Renderer renderer;
+};
+
 /// Slices a volume given directly as the rendering model describes it (any grid, any
 /// transfer functions), through the same VolumeSlicer the Volume node uses. Its model matrix
 /// is the traversal's, and the ClipPlanes in scope are added to the description's.

@@ -19,9 +19,8 @@ RayCastVolume softSphere() {
 
 } // namespace
 
-TEST_CASE("DVR through the Volume node matches the reference with a perspective camera") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "DVR through the Volume node matches the reference with a perspective camera") {
     auto root = Separator::create();
     auto data = VolumeData::create();
     data->generator = VolumeData::SOFT_SPHERE;
@@ -55,9 +54,7 @@ TEST_CASE("DVR through the Volume node matches the reference with a perspective 
     CHECK(volume->slicingStats().planes <= 84);
 }
 
-TEST_CASE("DVR with an orthographic camera matches the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "DVR with an orthographic camera matches the reference") {
     const RayCastVolume v =
         volumeOf(makeGrid({20, 20, 20}, VoxelType::UByte, glm::dvec3(1.0), blob),
                  transferFunction({{0.2, 0}, {0.6, 0.5}}, {{0, 0.2}, {1, 1}}));
@@ -67,9 +64,7 @@ TEST_CASE("DVR with an orthographic camera matches the reference") {
     checkDifference(c.difference, 0.1, 1.0);
 }
 
-TEST_CASE("MIP, MINIP and AVERAGE match the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "MIP, MINIP and AVERAGE match the reference") {
     RayCastVolume v =
         volumeOf(makeGrid({20, 18, 16}, VoxelType::UByte, glm::dvec3(1.0), blob),
                  transferFunction({{0, 0}, {1, 1}}, {{0, 0}, {1, 1}}, {{0, 1}, {1, 0}}));
@@ -87,9 +82,8 @@ TEST_CASE("MIP, MINIP and AVERAGE match the reference") {
     }
 }
 
-TEST_CASE("opacity correction converges to the reference as the plane count grows") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "opacity correction converges to the reference as the plane count grows") {
     const RayCastVolume v = marschnerLobbVolume();
     auto camera = framing(*v.data, {0.3f, 0.5f, 1.0f});
     std::vector<double> errors;
@@ -108,9 +102,8 @@ TEST_CASE("opacity correction converges to the reference as the plane count grow
     CHECK(errors[3] < 0.1 * k8Bit);
 }
 
-TEST_CASE("a smooth transfer function at two planes per voxel is within 1/255 RMSE") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "a smooth transfer function at two planes per voxel is within 1/255 RMSE") {
     const RayCastVolume v =
         volumeOf(makeMarschnerLobb(21, VoxelType::UByte),
                  transferFunction({{0, 0}, {1, 0.5}}, {{0, 0.2}, {1, 1}}, {{0, 0.5}, {1, 0.5}}));
@@ -119,9 +112,8 @@ TEST_CASE("a smooth transfer function at two planes per voxel is within 1/255 RM
     checkDifference(c.difference, 1.0, 2.0, "planes " + std::to_string(c.stats.planes) + ": ");
 }
 
-TEST_CASE("a thousand planes of alpha 0.002 accumulate within 1/255 of the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "a thousand planes of alpha 0.002 accumulate within 1/255 of the reference") {
     // A 16-voxel-deep constant volume seen along z by an orthographic camera, cut by 1000
     // planes: each slab is 0.016 voxels, and A is chosen so that its alpha is 0.002.
     const double slabAlpha = 0.002;
@@ -142,9 +134,7 @@ TEST_CASE("a thousand planes of alpha 0.002 accumulate within 1/255 of the refer
     CHECK(c.difference.max < k8Bit);
 }
 
-TEST_CASE("opacity near 1 gives finite pixels without banding") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "opacity near 1 gives finite pixels without banding") {
     // Fully opaque everywhere: each pixel shows the colour at the box's front face, a ramp in
     // x, over a blue background.
     const RayCastVolume v = volumeOf(
@@ -172,9 +162,7 @@ TEST_CASE("opacity near 1 gives finite pixels without banding") {
     }
 }
 
-TEST_CASE("interactive and still frames are both near the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "interactive and still frames are both near the reference") {
     const RayCastVolume v = softSphere();
     auto camera = framing(*v.data, {1.0f, 0.2f, 0.6f});
     const Comparison still = compareGrid(renderer, v, {}, *camera, 48);
@@ -187,9 +175,8 @@ TEST_CASE("interactive and still frames are both near the reference") {
                     "interactive " + std::to_string(moving.stats.planes) + " planes: ");
 }
 
-TEST_CASE("the viewer's interactive plane scale lowers the interactive plane count only") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "the viewer's interactive plane scale lowers the interactive plane count only") {
     const RayCastVolume v = softSphere();
     auto camera = framing(*v.data, {1.0f, 0.2f, 0.6f});
     auto root = Separator::create();
@@ -220,9 +207,7 @@ TEST_CASE("the viewer's interactive plane scale lowers the interactive plane cou
     CHECK(node->stats.planes == 5);
 }
 
-TEST_CASE("16-bit data over its full range matches the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "16-bit data over its full range matches the reference") {
     // Over the whole range, and over a narrow window near the top (5000 of 65535: 19 steps of
     // 8-bit data), sampled finely so that what remains is the data path's precision.
     RayCastVolume v =
@@ -241,9 +226,7 @@ TEST_CASE("16-bit data over its full range matches the reference") {
     checkDifference(window.difference, 0.1, 1.0, "window: ");
 }
 
-TEST_CASE("SHORT and FLOAT data match the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "SHORT and FLOAT data match the reference") {
     auto camera = perspectiveAt({10, 20, 40}, 0.6f, 10.0f, 100.0f);
     for (const VoxelType type : {VoxelType::Short, VoxelType::Float}) {
         TransferFunction1D tf = transferFunction({{0.3, 0}, {0.8, 0.7}}, {{0, 0.5}, {1, 1}});
@@ -254,9 +237,7 @@ TEST_CASE("SHORT and FLOAT data match the reference") {
     }
 }
 
-TEST_CASE("NaN and infinite float voxels are replaced as the reference does") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "NaN and infinite float voxels are replaced as the reference does") {
     auto grid = makeGrid({12, 12, 12}, VoxelType::Float, glm::dvec3(1.0), blob);
     grid->setValue(3, 4, 5, std::numeric_limits<double>::quiet_NaN());
     grid->setValue(6, 6, 6, std::numeric_limits<double>::infinity());
@@ -269,9 +250,7 @@ TEST_CASE("NaN and infinite float voxels are replaced as the reference does") {
     checkDifference(c.difference, 0.25, 2.0);
 }
 
-TEST_CASE("anisotropic spacing 1 1.5 2.5 matches the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "anisotropic spacing 1 1.5 2.5 matches the reference") {
     const RayCastVolume v =
         volumeOf(makeGrid({20, 14, 9}, VoxelType::UByte, glm::dvec3(1.0, 1.5, 2.5), blob),
                  transferFunction({{0.2, 0}, {0.7, 0.6}}, {{0, 0.3}, {1, 1}}));
@@ -282,9 +261,7 @@ TEST_CASE("anisotropic spacing 1 1.5 2.5 matches the reference") {
     }
 }
 
-TEST_CASE("NPOT 37x23x19, 1x1xN and Nx1x1 volumes match the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "NPOT 37x23x19, 1x1xN and Nx1x1 volumes match the reference") {
     const glm::ivec3 shapes[] = {{37, 23, 19}, {1, 1, 29}, {31, 1, 1}};
     for (const glm::ivec3 dims : shapes) {
         // Thin dimensions get a wide spacing so the box is not a needle.
