@@ -52,6 +52,8 @@ const char* usage =
     "                   [--reference-dir DIR] [--compare DIR [--rows CSV]] [--keep DIR]\n"
     "                   [--csv FILE] [--plot FILE.svg]\n"
     "       volsg-bench --suite node --export-views DIR [--size WxH] [--frames N] ...\n"
+    "       every form also takes the debug switches [--no-empty-cells]\n"
+    "                   [--no-texture-staging] [--max-3d-texture N] [--scalar-kernels]\n"
     "  --error         also compare K of the frames with the reference ray caster (same\n"
     "                  views, same size): RMSE, PSNR and max abs error\n"
     "  --error-frames  how many frames to compare (default: all, at most 4)\n"
@@ -75,7 +77,15 @@ const char* usage =
     "                  vtk_volume_bench.py) with their error on the same views, and the\n"
     "                  side-by-side table at equal error\n"
     "  --rows CSV      take the Volume node's rows from the CSV of an earlier node-suite run\n"
-    "                  instead of timing them again\n";
+    "                  instead of timing them again\n"
+    "  debug switches: an optimisation off, to measure what it saves (RenderOptions::debug)\n"
+    "  --no-empty-cells      Volume: draw the 8^3 cells the transfer function shows nothing of\n"
+    "  --no-texture-staging  Volume: upload each VolumeSeries step directly, not staged in a\n"
+    "                        pixel buffer while the one before shows\n"
+    "  --max-3d-texture N    Volume: bricks of at most N texels a side (below the driver's\n"
+    "                        GL_MAX_3D_TEXTURE_SIZE)\n"
+    "  --scalar-kernels      ShearWarpVolume: the scalar kernels, not the widest vector ones\n"
+    "                        this CPU runs\n";
 
 struct Settings {
     std::string scene, suite, keepDir, csv, plot;
@@ -276,6 +286,7 @@ int nodeSuite(const Settings& st) {
     if (st.tolerance > 0.0) ns.tolerance = st.tolerance;
     if (!st.planes.empty()) ns.planesPerVoxel = st.planes;
     ns.background = st.options.background;
+    ns.debug = st.options.debug;
     ns.backend = st.backend;
     ns.scenesDir = st.scenesDir;
     ns.cases = st.cases;
@@ -301,86 +312,55 @@ int nodeSuite(const Settings& st) {
     return 0;
 }
 
-int run(int argc, char** argv) {
-    cli::Arguments args(argc, argv);
+int run(cli::Arguments& args) {
     Settings st;
-    while (!args.empty()) {
-        const std::string a = args.take();
-        if (a == "--frames") {
-            st.frames = args.intValue(a, 1, 100000);
-            st.framesGiven = true;
-        } else if (a == "--size") {
-            const glm::ivec2 s = cli::parseSize(args.value(a));
-            st.options.width = s.x;
-            st.options.height = s.y;
-            st.sizeGiven = true;
-        } else if (a == "--error")
-            st.error = true;
-        else if (a == "--interactive")
-            st.options.interactive = true;
-        else if (a == "--error-frames") {
-            st.errorFrames = args.intValue(a, 1, 100000);
-            st.errorFramesGiven = true;
-        } else if (a == "--tolerance")
-            st.tolerance = parseTolerance(args.value(a));
-        else if (a == "--planes")
-            for (const std::string& p : splitList(args.value(a)))
-                st.planes.push_back(parsePositive(p, "--planes"));
-        else if (a == "--cases")
-            st.cases = splitList(args.value(a));
-        else if (a == "--kinds")
-            st.kinds = splitList(args.value(a));
-        else if (a == "--planes-only")
-            st.planesOnly = true;
-        else if (a == "--samples-per-plane")
-            st.samplesPerPlane = args.intValue(a, 1, 256);
-        else if (a == "--no-mip-peaks")
-            st.mipPeaks = false;
-        else if (a == "--scenes")
-            st.scenesDir = args.value(a);
-        else if (a == "--reference-dir")
-            st.referenceDir = args.value(a);
-        else if (a == "--export-views")
-            st.exportDir = args.value(a);
-        else if (a == "--compare")
-            st.compareDir = args.value(a);
-        else if (a == "--rows")
-            st.rowsCsv = args.value(a);
-        else if (a == "--csv")
-            st.csv = args.value(a);
-        else if (a == "--plot")
-            st.plot = args.value(a);
-        else if (a == "--volume-side") {
-            st.volumeSide = args.intValue(a, 2, 1024);
-            st.volumeSideGiven = true;
-        } else if (a == "--budget")
-            st.budgetMegabytes = parsePositive(args.value(a), "--budget");
-        else if (a == "--background")
-            st.options.background = cli::parseColor(args.value(a));
-        else if (a == "--backend")
-            st.backend = parseBackend(args.value(a));
-        else if (a == "--suite")
-            st.suite = args.value(a);
-        else if (a == "--nodes")
-            st.nodes = args.intValue(a, 4, 10000000);
-        else if (a == "--side")
-            st.side = args.intValue(a, 1, 1000);
-        else if (a == "--keep")
-            st.keepDir = args.value(a);
-        else if (a == "-h" || a == "--help") {
-            std::fputs(usage, stdout);
-            return 0;
-        } else if (!a.empty() && a[0] == '-')
-            throw Error("unknown option '" + a + "'");
-        else if (st.scene.empty())
-            st.scene = a;
-        else
-            throw Error("more than one scene file given");
-    }
-    if (st.scene.empty() == st.suite.empty()) {
-        std::fputs(usage, stderr);
-        return 2;
-    }
+    const auto list = [](std::vector<std::string>& target) {
+        return [&target](const std::string& v) { target = splitList(v); };
+    };
+    cli::Options table;
+    table.integer("--frames", st.frames, 1, 100000, &st.framesGiven)
+        .size("--size", st.options.width, st.options.height, &st.sizeGiven)
+        .flag("--error", st.error)
+        .flag("--interactive", st.options.interactive)
+        .integer("--error-frames", st.errorFrames, 1, 100000, &st.errorFramesGiven)
+        .value("--tolerance", [&](const std::string& v) { st.tolerance = parseTolerance(v); })
+        .value("--planes",
+               [&](const std::string& v) {
+                   for (const std::string& p : splitList(v))
+                       st.planes.push_back(parsePositive(p, "--planes"));
+               })
+        .value("--cases", list(st.cases))
+        .value("--kinds", list(st.kinds))
+        .flag("--planes-only", st.planesOnly)
+        .integer("--samples-per-plane", st.samplesPerPlane, 1, 256)
+        .flag("--no-mip-peaks", st.mipPeaks, false)
+        .text("--scenes", st.scenesDir)
+        .text("--reference-dir", st.referenceDir)
+        .text("--export-views", st.exportDir)
+        .text("--compare", st.compareDir)
+        .text("--rows", st.rowsCsv)
+        .text("--csv", st.csv)
+        .text("--plot", st.plot)
+        .integer("--volume-side", st.volumeSide, 2, 1024, &st.volumeSideGiven)
+        .value("--budget",
+               [&](const std::string& v) { st.budgetMegabytes = parsePositive(v, "--budget"); })
+        .color("--background", st.options.background)
+        .value("--backend", [&](const std::string& v) { st.backend = parseBackend(v); })
+        .text("--suite", st.suite)
+        .integer("--nodes", st.nodes, 4, 10000000)
+        .integer("--side", st.side, 1, 1000)
+        .text("--keep", st.keepDir)
+        // Debug switches: RenderOptions::debug.
+        .flag("--no-empty-cells", st.options.debug.skipEmptyCells, false)
+        .flag("--no-texture-staging", st.options.debug.textureStaging, false)
+        .integer("--max-3d-texture", st.options.debug.max3DTextureSize, 2, 16384)
+        .flag("--scalar-kernels", st.options.debug.vectorKernels, false);
+    const auto scene = [&](const std::string& a) {
+        if (!st.scene.empty()) throw Error("more than one scene file given");
+        st.scene = a;
+    };
+    if (!table.read(args, usage, scene)) return 0;
+    if (st.scene.empty() == st.suite.empty()) return cli::usageError(usage);
     if (!st.scene.empty()) return sceneBenchmark(st);
     if (st.suite == "volumes") {
         bench::VolumeSuiteSettings vs;
@@ -392,6 +372,7 @@ int run(int argc, char** argv) {
         vs.errorFrames = std::min(st.errorFrames, vs.frames);
         vs.side = st.volumeSide;
         vs.background = st.options.background;
+        vs.debug = st.options.debug;
         vs.backend = st.backend;
         vs.keepDir = st.keepDir;
         const std::vector<bench::BenchRow> rows = bench::runVolumeSuite(vs);
@@ -432,12 +413,15 @@ int run(int argc, char** argv) {
             }
         }
         ss.backend = st.backend;
+        ss.debug = st.options.debug;
         return bench::runSeriesSuite(ss);
     }
-    if (st.suite == "rtvr") // exit code 1 when no row was measured
-        return bench::runRtvrSuite(
-                   {st.options.width, st.options.height, st.frames, st.backend, st.keepDir, {}})
-            .empty();
+    if (st.suite == "rtvr") { // exit code 1 when no row was measured
+        const bench::RtvrSuiteSettings rs{st.options.width, st.options.height, st.frames,
+                                          st.backend,       st.keepDir,        {},
+                                          st.options.debug};
+        return bench::runRtvrSuite(rs).empty();
+    }
     if (st.suite == "parse" || st.suite == "all") parseSuite(st);
     if (st.suite == "traversal" || st.suite == "all") traversalSuite(st);
     if (st.suite != "parse" && st.suite != "traversal" && st.suite != "all")
@@ -449,10 +433,5 @@ int run(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "volsg-bench: %s\n", e.what());
-        return 1;
-    }
+    return volsg::cli::runTool("volsg-bench", argc, argv, run);
 }

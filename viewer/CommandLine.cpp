@@ -4,6 +4,8 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <exception>
 
 #include <volsg/core/Error.h>
 
@@ -28,6 +30,100 @@ int Arguments::intValue(std::string_view option, int min, int max) {
         throw Error("option " + std::string(option) + " expects a whole number from " +
                     std::to_string(min) + " to " + std::to_string(max) + ", not '" + text + "'");
     return v;
+}
+
+int runTool(const char* name, int argc, char** argv, const std::function<int(Arguments&)>& body) {
+    try {
+        Arguments args(argc, argv);
+        return body(args);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s: %s\n", name, e.what());
+        return 1;
+    }
+}
+
+Options& Options::add(const Names& names, Action action) {
+    for (const std::string& name : names.list)
+        actions_.emplace_back(name, action);
+    return *this;
+}
+
+Options& Options::flag(const Names& names, bool& target, bool value) {
+    return add(names, [&target, value](Arguments&, const std::string&) { target = value; });
+}
+
+Options& Options::value(const Names& names, std::function<void(const std::string&)> set) {
+    return add(names, [set = std::move(set)](Arguments& args, const std::string& option) {
+        set(args.value(option));
+    });
+}
+
+Options& Options::text(const Names& names, std::string& target) {
+    return add(names, [&target](Arguments& args, const std::string& option) {
+        target = args.value(option);
+    });
+}
+
+Options& Options::integer(const Names& names, int& target, int min, int max, bool* given) {
+    return add(names, [&target, min, max, given](Arguments& args, const std::string& option) {
+        target = args.intValue(option, min, max);
+        if (given) *given = true;
+    });
+}
+
+Options& Options::size(const Names& names, int& width, int& height, bool* given) {
+    return add(names, [&width, &height, given](Arguments& args, const std::string& option) {
+        const glm::ivec2 s = parseSize(args.value(option));
+        width = s.x;
+        height = s.y;
+        if (given) *given = true;
+    });
+}
+
+Options& Options::color(const Names& names, glm::vec3& target) {
+    return add(names, [&target](Arguments& args, const std::string& option) {
+        target = parseColor(args.value(option));
+    });
+}
+
+Options& Options::fraction(const Names& names, double& target) {
+    return add(names, [&target](Arguments& args, const std::string& option) {
+        target = parseFraction(args.value(option), option);
+    });
+}
+
+bool Options::read(Arguments& args, const char* usage, const Operand& operand) const {
+    while (!args.empty()) {
+        const std::string a = args.take();
+        if (a == "-h" || a == "--help") {
+            std::fputs(usage, stdout);
+            return false;
+        }
+        const auto found = std::find_if(actions_.begin(), actions_.end(),
+                                        [&](const auto& entry) { return entry.first == a; });
+        if (found != actions_.end())
+            found->second(args, a);
+        else if (!operand)
+            throw Error("unknown argument '" + a + "'");
+        else if (!a.empty() && a[0] == '-')
+            throw Error("unknown option '" + a + "'");
+        else
+            operand(a);
+    }
+    return true;
+}
+
+Options::Operand sceneOperand(std::string& scene) {
+    return [&scene](const std::string& a) {
+        if (!scene.empty())
+            throw Error("more than one scene file given ('" + scene + "', '" + a + "')");
+        scene = a;
+    };
+}
+
+int usageError(const char* usage) {
+    std::fputs(usage, stderr);
+    return 2;
 }
 
 glm::ivec2 parseSize(const std::string& text) {

@@ -2,12 +2,10 @@
 // visualization to a compact voxel-list file (.vsgv, lib/volsg/voxelfile/README.md) that
 // volsg-view and volsg-render open without the volume.
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <string>
 
 #include "CommandLine.h"
-#include <volsg/core/Error.h>
 #include <volsg/io/AtomicFile.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/voxelfile/VoxelFile.h>
@@ -23,29 +21,12 @@ const char* usage =
     "  --scene  also write a plain scene file whose ShearWarpVolumes name OUT.vsgv in their\n"
     "           voxelFile field (relative to the scene file's folder)\n";
 
-int run(int argc, char** argv) {
-    volsg::cli::Arguments args(argc, argv);
+int run(volsg::cli::Arguments& args) {
     std::string scene, output, companion;
-    while (!args.empty()) {
-        const std::string a = args.take();
-        if (a == "-o" || a == "--output")
-            output = args.value(a);
-        else if (a == "--scene")
-            companion = args.value(a);
-        else if (a == "-h" || a == "--help") {
-            std::fputs(usage, stdout);
-            return 0;
-        } else if (!a.empty() && a[0] == '-')
-            throw volsg::Error("unknown option '" + a + "'");
-        else if (scene.empty())
-            scene = a;
-        else
-            throw volsg::Error("more than one scene file given ('" + scene + "', '" + a + "')");
-    }
-    if (scene.empty() || output.empty()) {
-        std::fputs(usage, stderr);
-        return 2;
-    }
+    volsg::cli::Options table;
+    table.text({"-o", "--output"}, output).text("--scene", companion);
+    if (!table.read(args, usage, volsg::cli::sceneOperand(scene))) return 0;
+    if (scene.empty() || output.empty()) return volsg::cli::usageError(usage);
     volsg::ref_ptr<volsg::Node> root = volsg::readScene(scene);
     const volsg::VoxelFileContent content = volsg::packScene(*root);
     volsg::writeVoxelFile(output, content);
@@ -68,10 +49,5 @@ int run(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "volsg-pack: %s\n", e.what());
-        return 1;
-    }
+    return volsg::cli::runTool("volsg-pack", argc, argv, run);
 }

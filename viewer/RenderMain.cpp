@@ -1,7 +1,6 @@
 // volsg-render: renders a scene file headless to PNG or PFM, or writes it back as a scene file.
 #include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <string>
 
 #include "CommandLine.h"
@@ -41,8 +40,7 @@ double parseTolerance(const std::string& text) {
     return t;
 }
 
-int run(int argc, char** argv) {
-    volsg::cli::Arguments args(argc, argv);
+int run(volsg::cli::Arguments& args) {
     std::string scene, output;
     volsg::RenderOptions options;
     volsg::Backend backend = volsg::Backend::OSMesa;
@@ -50,42 +48,19 @@ int run(int argc, char** argv) {
     volsg::RayCastOptions rayOptions;
     volsg::StereoOptions stereo;
     stereo.mode = volsg::StereoMode::Off;
-    while (!args.empty()) {
-        const std::string a = args.take();
-        if (a == "-o" || a == "--output")
-            output = args.value(a);
-        else if (a == "--size") {
-            const glm::ivec2 s = volsg::cli::parseSize(args.value(a));
-            options.width = s.x;
-            options.height = s.y;
-        } else if (a == "--backend")
-            backend = volsg::parseBackend(args.value(a));
-        else if (a == "--background")
-            options.background = volsg::cli::parseColor(args.value(a));
-        else if (a == "--reference")
-            reference = true;
-        else if (a == "--interactive")
-            options.interactive = true;
-        else if (a == "--tolerance")
-            rayOptions.tolerance = parseTolerance(args.value(a));
-        else if (a == "--stereo")
-            stereo.mode = volsg::parseStereoMode(args.value(a));
-        else if (a == "--eye-separation")
-            stereo.separationFraction = volsg::cli::parseFraction(args.value(a), a);
-        else if (a == "-h" || a == "--help") {
-            std::fputs(usage, stdout);
-            return 0;
-        } else if (!a.empty() && a[0] == '-')
-            throw volsg::Error("unknown option '" + a + "'");
-        else if (scene.empty())
-            scene = a;
-        else
-            throw volsg::Error("more than one scene file given ('" + scene + "', '" + a + "')");
-    }
-    if (scene.empty() || output.empty()) {
-        std::fputs(usage, stderr);
-        return 2;
-    }
+    volsg::cli::Options table;
+    table.text({"-o", "--output"}, output)
+        .size("--size", options.width, options.height)
+        .value("--backend", [&](const std::string& v) { backend = volsg::parseBackend(v); })
+        .color("--background", options.background)
+        .flag("--reference", reference)
+        .flag("--interactive", options.interactive)
+        .value("--tolerance",
+               [&](const std::string& v) { rayOptions.tolerance = parseTolerance(v); })
+        .value("--stereo", [&](const std::string& v) { stereo.mode = volsg::parseStereoMode(v); })
+        .fraction("--eye-separation", stereo.separationFraction);
+    if (!table.read(args, usage, volsg::cli::sceneOperand(scene))) return 0;
+    if (scene.empty() || output.empty()) return volsg::cli::usageError(usage);
     const std::string ext = volsg::cli::extensionOf(output);
     if (ext != ".png" && ext != ".pfm" && ext != ".iv")
         throw volsg::Error("output '" + output + "' must end in .png, .pfm or .iv");
@@ -116,10 +91,5 @@ int run(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "volsg-render: %s\n", e.what());
-        return 1;
-    }
+    return volsg::cli::runTool("volsg-render", argc, argv, run);
 }

@@ -1,8 +1,6 @@
 // volsg-view: shows a scene in a window with examiner navigation, manipulators and the editor
 // panels; `--script FILE` plays recorded input (see view/ViewerScript.h).
-#include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <filesystem>
 #include <string>
 
@@ -35,59 +33,42 @@ const char* usage =
     "         steps its plane\n"
     "  The scene reloads when its file changes.\n";
 
-int run(int argc, char** argv) {
-    volsg::cli::Arguments args(argc, argv);
+int run(volsg::cli::Arguments& args) {
     volsg::ViewerOptions options;
-    while (!args.empty()) {
-        const std::string a = args.take();
-        if (a == "--script")
-            options.scriptPath = args.value(a);
-        else if (a == "--size") {
-            const glm::ivec2 s = volsg::cli::parseSize(args.value(a));
-            options.width = s.x;
-            options.height = s.y;
-        } else if (a == "--background")
-            options.background = volsg::cli::parseColor(args.value(a));
-        else if (a == "--antialias") { // optionally followed by the mode: msaa (default), 2x2
-            // The next word is the mode unless it is an option or an existing file (the scene),
-            // so a mistyped mode is named as such rather than taken for a second scene.
-            const bool modeFollows = !args.empty() && !args.peek().empty() &&
-                                     args.peek()[0] != '-' && !std::filesystem::exists(args.peek());
-            options.antialias =
-                modeFollows ? volsg::parseAntialias(args.take()) : volsg::Antialias::Multisample;
-        } else if (a == "--seek-time") {
-            const std::string text = args.value(a);
-            char* end = nullptr;
-            options.seekTime = std::strtod(text.c_str(), &end);
-            if (text.empty() || *end != '\0' || !(options.seekTime >= 0.0) ||
-                !(options.seekTime <= 10.0))
-                throw volsg::Error("option --seek-time expects seconds in [0, 10], not '" + text +
-                                   "'");
-        } else if (a == "--no-panels")
-            options.panels = false;
-        else if (a == "--layout")
-            options.layout = volsg::parseViewLayout(args.value(a));
-        else if (a == "--navigation")
-            options.navigation = volsg::parseNavigationMode(args.value(a));
-        else if (a == "--stereo")
-            options.stereo.mode = volsg::parseStereoMode(args.value(a));
-        else if (a == "--eye-separation")
-            options.stereo.separationFraction = volsg::cli::parseFraction(args.value(a), a);
-        else if (a == "-h" || a == "--help") {
-            std::fputs(usage, stdout);
-            return 0;
-        } else if (!a.empty() && a[0] == '-')
-            throw volsg::Error("unknown option '" + a + "'");
-        else if (options.scenePath.empty())
-            options.scenePath = a;
-        else
-            throw volsg::Error("more than one scene file given ('" + options.scenePath + "', '" +
-                               a + "')");
-    }
-    if (options.scenePath.empty()) {
-        std::fputs(usage, stderr);
-        return 2;
-    }
+    volsg::cli::Options table;
+    table.text("--script", options.scriptPath)
+        .size("--size", options.width, options.height)
+        .color("--background", options.background)
+        .add("--antialias", // optionally followed by the mode: msaa (default), 2x2
+             [&](volsg::cli::Arguments& words, const std::string&) {
+                 // The next word is the mode unless it is an option or an existing file (the
+                 // scene), so a mistyped mode is named as such rather than taken for a second
+                 // scene.
+                 const bool modeFollows = !words.empty() && !words.peek().empty() &&
+                                          words.peek()[0] != '-' &&
+                                          !std::filesystem::exists(words.peek());
+                 options.antialias = modeFollows ? volsg::parseAntialias(words.take())
+                                                 : volsg::Antialias::Multisample;
+             })
+        .value("--seek-time",
+               [&](const std::string& text) {
+                   char* end = nullptr;
+                   options.seekTime = std::strtod(text.c_str(), &end);
+                   if (text.empty() || *end != '\0' || !(options.seekTime >= 0.0) ||
+                       !(options.seekTime <= 10.0))
+                       throw volsg::Error("option --seek-time expects seconds in [0, 10], not '" +
+                                          text + "'");
+               })
+        .flag("--no-panels", options.panels, false)
+        .value("--layout",
+               [&](const std::string& v) { options.layout = volsg::parseViewLayout(v); })
+        .value("--navigation",
+               [&](const std::string& v) { options.navigation = volsg::parseNavigationMode(v); })
+        .value("--stereo",
+               [&](const std::string& v) { options.stereo.mode = volsg::parseStereoMode(v); })
+        .fraction("--eye-separation", options.stereo.separationFraction);
+    if (!table.read(args, usage, volsg::cli::sceneOperand(options.scenePath))) return 0;
+    if (options.scenePath.empty()) return volsg::cli::usageError(usage);
     volsg::Viewer viewer(options);
     return viewer.run();
 }
@@ -95,10 +76,5 @@ int run(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "volsg-view: %s\n", e.what());
-        return 1;
-    }
+    return volsg::cli::runTool("volsg-view", argc, argv, run);
 }

@@ -11,8 +11,6 @@ using namespace volsg::test;
 
 namespace {
 
-constexpr double k8Bit = 1.0 / 255.0;
-
 double shell(const glm::dvec3& p) {
     const double r = glm::length(p);
     return std::clamp(1.0 - 4.0 * std::abs(r - 0.6), 0.0, 1.0) * (0.6 + 0.4 * p.x * p.x);
@@ -22,9 +20,9 @@ double shell(const glm::dvec3& p) {
 
 TEST_CASE("a volume beyond the 3D texture size limit is bricked and matches the reference") {
     OSMesaContext context;
-    RayCastVolume volume;
-    volume.data = makeGrid({30, 20, 12}, VoxelType::UByte, glm::dvec3(1.0), shell);
-    volume.transferFunctions[-1] = transferFunction({{0.1, 0}, {0.8, 0.8}}, {{0, 0.2}, {1, 1}});
+    const RayCastVolume volume =
+        volumeOf(makeGrid({30, 20, 12}, VoxelType::UByte, glm::dvec3(1.0), shell),
+                 transferFunction({{0.1, 0}, {0.8, 0.8}}, {{0, 0.2}, {1, 1}}));
     auto camera = framing(*volume.data, {0.4f, 0.6f, 1.0f});
 
     Comparison whole, limited;

@@ -32,7 +32,6 @@ using namespace volsg::test;
 
 namespace {
 
-constexpr double k8Bit = 1.0 / 255.0;
 /// The transfer table's resolution in v (TransferTable::kEntries samples over [0, 1]).
 constexpr double kTableStep = 1.0 / 4095.0;
 const glm::vec3 kBackground(0.1f, 0.2f, 0.3f);
@@ -151,9 +150,8 @@ TransferFunction1D colourful(std::vector<PiecewiseLinear::Point> alpha) {
 
 } // namespace
 
-TEST_CASE("orthoslice pixels equal double precision sampling of the same world point") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "orthoslice pixels equal double precision sampling of the same world point") {
     SliceScene scene(VolumeData::MARSCHNER_LOBB, glm::vec3(32.0f), colourful({{0, 0.3}, {1, 1}}));
     auto slice = OrthoSlice::create();
     slice->axis = OrthoSlice::Y;
@@ -206,9 +204,8 @@ TEST_CASE("the sampler replaces non-finite float voxels by the finite extremes")
     CHECK(t.rgba.r == doctest::Approx(0.5).epsilon(1e-12));
 }
 
-TEST_CASE("obliqueslice is trilinear with anisotropic spacing under a transform") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "obliqueslice is trilinear with anisotropic spacing under a transform") {
     SliceScene scene(VolumeData::SOFT_SPHERE, glm::vec3(24.0f), colourful({{0, 0.3}, {1, 1}}));
     scene.data->spacing = glm::vec3(1.0f, 1.5f, 0.75f);
     auto transform = Transform::create();
@@ -230,9 +227,7 @@ TEST_CASE("obliqueslice is trilinear with anisotropic spacing under a transform"
     CHECK(c.maxError <= k8Bit);
 }
 
-TEST_CASE("a 16-bit slice matches within the transfer table resolution") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a 16-bit slice matches within the transfer table resolution") {
     TransferFunction1D tf = colourful({{0, 0.5}, {1, 1}});
     tf.setDataRange(10000.0, 50000.0);
     SliceScene scene(VolumeData::RAMP16, glm::vec3(40.0f, 16.0f, 16.0f), tf);
@@ -252,9 +247,7 @@ TEST_CASE("a 16-bit slice matches within the transfer table resolution") {
     CHECK(c.maxError <= kTableStep);
 }
 
-TEST_CASE("a float slice matches with the data's own range") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a float slice matches with the data's own range") {
     SliceScene scene(VolumeData::SOFT_SPHERE, glm::vec3(24.0f), colourful({{0, 0.5}, {1, 1}}));
     scene.data->dataType = VolumeData::FLOAT;
     auto slice = ObliqueSlice::create();
@@ -271,9 +264,7 @@ TEST_CASE("a float slice matches with the data's own range") {
     CHECK(c.maxError <= kTableStep);
 }
 
-TEST_CASE("a tagged slice uses the transfer function of each voxel's tag") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a tagged slice uses the transfer function of each voxel's tag") {
     SliceScene scene(VolumeData::LABELLED, glm::vec3(24.0f), colourful({{0, 0.4}, {1, 1}}));
     auto inner = TransferFunction::create();
     inner->tag = 1;
@@ -302,9 +293,9 @@ TEST_CASE("a tagged slice uses the transfer function of each voxel's tag") {
     CHECK(c.maxError <= k8Bit);
 }
 
-TEST_CASE("alpha binary discards transparent pixels and alpha as is blends over the background") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture,
+    "alpha binary discards transparent pixels and alpha as is blends over the background") {
     // Alpha 0 below v = 0.4 (a kink): binary draws only where the data exceeds it.
     SliceScene scene(VolumeData::SOFT_SPHERE, glm::vec3(24.0f),
                      colourful({{0, 0}, {0.4, 0}, {1, 0.8}}));
@@ -328,9 +319,8 @@ TEST_CASE("alpha binary discards transparent pixels and alpha as is blends over 
     }
 }
 
-TEST_CASE("a slice inside a volume is covered in front and hides the volume behind it") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "a slice inside a volume is covered in front and hides the volume behind it") {
     const ref_ptr<Node> root = readSceneFromString(R"(#Inventor V2.1 ascii
 Separator {
   PerspectiveCamera { position 0.6 0.5 2.0 orientation -0.6 0.8 0 0.35 heightAngle 0.75
@@ -346,18 +336,10 @@ Separator {
     RenderOptions options;
     options.width = options.height = 48;
     options.background = kBackground;
-    const Image gl = renderer.render(*root, options);
-    RayCastOptions rays;
-    rays.tolerance = 2e-4;
     // renderReference takes opaque geometry (the slice, drawn in the opaque pass) from GL and
     // ends the reference rays at its depth.
-    const Image ref = renderReference(*root, options, nullptr, rays);
-    keepImage(gl, "inside-gl");
-    keepImage(ref, "inside-ref");
-    const ImageDifference d = difference(gl, ref);
-    MESSAGE("rmse " << d.rmse * 255 << "/255, max " << d.max * 255 << "/255");
-    CHECK(d.rmse < 0.3 * k8Bit);
-    CHECK(d.max < 4.0 * k8Bit);
+    Image gl;
+    checkDifference(compareScene(renderer, *root, options, "inside", &gl), 0.3, 4.0);
 
     // Without the volume in front the slice shows brighter; the volume dims it and adds its
     // own colour, so the composited centre differs from the bare slice.
@@ -370,9 +352,8 @@ Separator {
     CHECK(glm::length(glm::vec3(a) - glm::vec3(b)) > 0.05f);
 }
 
-TEST_CASE("a clipping orthoslice cuts the volume after it on its clipping side") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "a clipping orthoslice cuts the volume after it on its clipping side") {
     const std::string scene = R"(#Inventor V2.1 ascii
 Separator {
   PerspectiveCamera { position 0.4 0.8 2.0 orientation -1 0.3 0 0.4 heightAngle 0.75
@@ -404,11 +385,7 @@ Separator {
         const Image gl = renderer.render(*root, options);
         const Image ref = renderReference(*root, options);
         keepImage(gl, std::string("clipping-") + side);
-        const ImageDifference d = difference(gl, ref);
-        MESSAGE(std::string(side) << ": rmse " << d.rmse * 255 << "/255, max " << d.max * 255
-                                  << "/255");
-        CHECK(d.rmse < 0.3 * k8Bit);
-        CHECK(d.max < 4.0 * k8Bit);
+        checkDifference(difference(gl, ref), 0.3, 4.0, std::string(side) + ": ");
     }
 }
 
@@ -480,9 +457,9 @@ TEST_CASE("a pick misses a slice where it is discarded and hits the nearer of sl
     CHECK(pickAt(centre)->voxel);
 }
 
-TEST_CASE("LightModel BASE_COLOR draws shapes unlit in their diffuse colour within its scope") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture,
+    "LightModel BASE_COLOR draws shapes unlit in their diffuse colour within its scope") {
     auto root = Separator::create();
     auto camera = perspectiveAt({0.0f, 0.0f, 6.0f}, 0.8f, 1.0f, 20.0f);
     root->addChild(camera);
@@ -527,9 +504,9 @@ TEST_CASE("LightModel BASE_COLOR draws shapes unlit in their diffuse colour with
     CHECK(std::abs(a.g - 0.5f) > 0.01f);
 }
 
-TEST_CASE("ResetTransform TRANSFORM resets the model matrix for render, pick and bounding box") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture,
+    "ResetTransform TRANSFORM resets the model matrix for render, pick and bounding box") {
     auto root = Separator::create();
     auto camera = perspectiveAt({0.0f, 0.0f, 8.0f}, 0.8f, 1.0f, 20.0f);
     root->addChild(camera);

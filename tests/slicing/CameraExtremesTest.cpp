@@ -9,7 +9,6 @@ using namespace volsg::test;
 
 namespace {
 
-constexpr double k8Bit = 1.0 / 255.0;
 constexpr float kDegrees120 = 2.0f * 3.14159265f / 3.0f;
 
 /// A smooth blob with some structure so that wrong plane geometry shows up as error.
@@ -20,12 +19,9 @@ double lumpyBlob(const glm::dvec3& p) {
 }
 
 RayCastVolume lumpyVolume() {
-    RayCastVolume v;
-    v.data = makeGrid({28, 24, 20}, VoxelType::UByte, glm::dvec3(1.0), lumpyBlob);
-    v.transferFunctions[-1] =
-        transferFunction({{0, 0.0}, {0.2, 0.02}, {1, 0.35}}, {{0, 0.1}, {1, 1}},
-                         {{0, 0.6}, {1, 0.5}}, {{0, 1}, {1, 0.2}});
-    return v;
+    return volumeOf(makeGrid({28, 24, 20}, VoxelType::UByte, glm::dvec3(1.0), lumpyBlob),
+                    transferFunction({{0, 0.0}, {0.2, 0.02}, {1, 0.35}}, {{0, 0.1}, {1, 1}},
+                                     {{0, 0.6}, {1, 0.5}}, {{0, 1}, {1, 0.2}}));
 }
 
 /// A perspective camera at `eye` looking along `forward` (not at the origin).
@@ -38,9 +34,7 @@ ref_ptr<PerspectiveCamera> lookingAlong(const glm::vec3& eye, const glm::vec3& f
 
 } // namespace
 
-TEST_CASE("a volume wholly behind the camera leaves the background untouched") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a volume wholly behind the camera leaves the background untouched") {
     const RayCastVolume v = lumpyVolume();
     const glm::vec3 background(0.2f, 0.3f, 0.4f);
     // The eye is 40 units in front of the volume, looking away from it: the whole box is
@@ -60,25 +54,16 @@ TEST_CASE("a volume wholly behind the camera leaves the background untouched") {
     }
 }
 
-TEST_CASE("a volume half behind the camera shows only its part in front") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a volume half behind the camera shows only its part in front") {
     const RayCastVolume v = lumpyVolume();
     // The eye at the box centre looks out through the +x face: the -x half is behind it.
     auto camera = lookingAlong({0, 0, 0}, {1, 0.15f, 0.1f}, 1.4f, 0.25f, 100.0f);
     const Comparison c = compareGrid(renderer, v, {}, *camera, 64);
-    keepImage(c.gl, "half-behind");
-    keepImage(c.reference, "half-behind-ref");
-    MESSAGE(c.stats.planes << " planes, rmse " << c.difference.rmse * 255 << "/255, max "
-                           << c.difference.max * 255 << "/255");
-    CHECK(c.stats.sliceTriangles > 0);
-    CHECK(c.difference.rmse < 0.25 * k8Bit);
-    CHECK(c.difference.max < 1.0 * k8Bit);
+    keepImages(c, "half-behind");
+    checkSliced(c, 0.25, 1.0);
 }
 
-TEST_CASE("perspective at a 120 degree field of view matches the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "perspective at a 120 degree field of view matches the reference") {
     const RayCastVolume v = lumpyVolume();
     // Close enough that the box fills most of the 120 degree frustum: rays at the image
     // corners cross the planes at over 60 degrees, where the plane spacing along the ray is
@@ -86,28 +71,15 @@ TEST_CASE("perspective at a 120 degree field of view matches the reference") {
     for (const glm::vec3 eye : {glm::vec3(0, 0, 12), glm::vec3(10, 8, 13)}) {
         auto camera = perspectiveAt(eye, kDegrees120, 0.5f, 100.0f);
         const Comparison c = compareGrid(renderer, v, {}, *camera, 64);
-        keepImage(c.gl, "fov120-" + std::to_string(int(eye.x)));
-        keepImage(c.reference, "fov120-ref-" + std::to_string(int(eye.x)));
-        MESSAGE("eye " << eye.x << "," << eye.y << "," << eye.z << ": " << c.stats.planes
-                       << " planes, rmse " << c.difference.rmse * 255 << "/255, max "
-                       << c.difference.max * 255 << "/255");
-        CHECK(c.stats.sliceTriangles > 0);
-        CHECK(c.difference.rmse < 0.2 * k8Bit);
-        CHECK(c.difference.max < 1.0 * k8Bit);
+        keepImages(c, "fov120-" + std::to_string(int(eye.x)));
+        checkSliced(c, 0.2, 1.0, "eye " + text(eye) + ": ");
     }
 }
 
-TEST_CASE("a 120 degree view from inside the volume matches the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "a 120 degree view from inside the volume matches the reference") {
     const RayCastVolume v = lumpyVolume();
     auto camera = perspectiveAt({2, -1, 4}, kDegrees120, 0.3f, 100.0f);
     const Comparison c = compareGrid(renderer, v, {}, *camera, 64);
-    keepImage(c.gl, "fov120-inside");
-    keepImage(c.reference, "fov120-inside-ref");
-    MESSAGE(c.stats.planes << " planes, rmse " << c.difference.rmse * 255 << "/255, max "
-                           << c.difference.max * 255 << "/255");
-    CHECK(c.stats.sliceTriangles > 0);
-    CHECK(c.difference.rmse < 0.4 * k8Bit);
-    CHECK(c.difference.max < 1.5 * k8Bit);
+    keepImages(c, "fov120-inside");
+    checkSliced(c, 0.4, 1.5);
 }

@@ -14,8 +14,6 @@ using namespace volsg::test;
 
 namespace {
 
-constexpr double k8Bit = 1.0 / 255.0;
-
 /// A ball of radius 0.45 (of the half extent) in a 40^3 box, its value falling from 1 at the
 /// centre to 0 at the surface, and 0 outside: most cells hold nothing but zeros.
 ref_ptr<VolumeGrid> ball() {

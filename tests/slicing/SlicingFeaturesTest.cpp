@@ -20,8 +20,6 @@ using namespace volsg::test;
 
 namespace {
 
-constexpr double k8Bit = 1.0 / 255.0;
-
 /// VolumeData (a generator), one TransferFunction and a Volume in a Separator.
 struct NodeVolume {
     ref_ptr<Separator> root = Separator::create();
@@ -37,6 +35,9 @@ struct NodeVolume {
         root->addChild(transfer);
         root->addChild(volume);
     }
+
+    /// The volume as the reference sees it (default transfer function only).
+    RayCastVolume description() const { return volumeOf(data->grid(), transfer->function()); }
 };
 
 Image renderScene(Renderer& renderer, Node& root, Camera& camera, int size,
@@ -49,16 +50,9 @@ Image renderScene(Renderer& renderer, Node& root, Camera& camera, int size,
     return renderer.render(root, options);
 }
 
-double blob(const glm::dvec3& p) {
-    const double r = glm::length(p);
-    return std::clamp(0.55 - 0.45 * r + 0.15 * std::sin(4.0 * p.x) * std::cos(3.0 * p.y), 0.0, 1.0);
-}
-
 } // namespace
 
-TEST_CASE("tagged voxels use the transfer function of their tag") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "tagged voxels use the transfer function of their tag") {
     const int n = 24;
     NodeVolume scene(VolumeData::LABELLED, n,
                      transferFunction({{0, 0}, {1, 0.3}}, {{0, 0.5}, {1, 0.5}}));
@@ -79,28 +73,22 @@ TEST_CASE("tagged voxels use the transfer function of their tag") {
     auto camera = framing(*scene.data->grid(), {0.3f, -0.6f, 1.0f});
     const Image gl = renderScene(renderer, *scene.root, *camera, 48);
 
-    RayCastVolume v;
-    v.data = scene.data->grid();
+    RayCastVolume v = scene.description();
     v.tags = scene.data->tagGrid();
-    v.transferFunctions[-1] = scene.transfer->function();
     for (const auto& [tag, function] : tagged)
         v.transferFunctions[tag] = function;
     const Image ref = referenceImage(rayCamera(*camera, 48, 48), {v});
     keepImage(gl, "tagged-gl");
     keepImage(ref, "tagged-ref");
-    const ImageDifference d = difference(gl, ref);
-    MESSAGE("rmse " << d.rmse * 255 << "/255, max " << d.max * 255 << "/255");
     // Tag boundaries are steps: each slab is split at its tag cell's faces (classifySlab), but
     // a slab that crosses two faces lumps the far parts together.
-    CHECK(d.rmse < 0.5 * k8Bit);
-    CHECK(d.max < 8.0 * k8Bit);
+    checkDifference(difference(gl, ref), 0.5, 8.0);
     // The inner tag's yellow shows in the middle; the corner tag's blue at the bottom.
     CHECK(gl.at(24, 24).r > 2.0f * gl.at(24, 24).b);
 }
 
-TEST_CASE("a transfer function change rebuilds the table without uploading the volume again") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture, "a transfer function change rebuilds the table without uploading the volume again") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 20, transferFunction({{0, 0}, {1, 0.5}}));
     auto camera = framing(*scene.data->grid(), {0.0f, 0.0f, 1.0f});
     const Image first = renderScene(renderer, *scene.root, *camera, 32);
@@ -129,19 +117,14 @@ TEST_CASE("a transfer function change rebuilds the table without uploading the v
     CHECK(stats.transferTableBuilds == 3);
 }
 
-TEST_CASE("a bricked volume renders the same image as an unbricked one") {
-    OSMesaContext context;
-    Renderer renderer;
-    RayCastVolume plain;
-    plain.data = makeGrid({30, 26, 22}, VoxelType::UByte, glm::dvec3(1.0, 1.2, 1.0), blob);
-    plain.transferFunctions[-1] = transferFunction({{0.1, 0}, {0.7, 0.7}}, {{0, 0.3}, {1, 1}});
-    RayCastVolume tagged;
-    const LabelledVolume labelled = makeLabelledVolume(26);
-    tagged.data = labelled.data;
-    tagged.tags = labelled.tags;
-    tagged.transferFunctions[-1] = plain.transferFunctions[-1];
-    tagged.transferFunctions[1] = transferFunction({{0, 0}, {1, 0.9}}, {{0, 1}, {1, 1}});
-    tagged.transferFunctions[3] = transferFunction({{0, 0.3}, {1, 0.3}}, {{0, 0}, {1, 0}});
+TEST_CASE_FIXTURE(GlFixture, "a bricked volume renders the same image as an unbricked one") {
+    const RayCastVolume plain =
+        volumeOf(makeGrid({30, 26, 22}, VoxelType::UByte, glm::dvec3(1.0, 1.2, 1.0), blob),
+                 transferFunction({{0.1, 0}, {0.7, 0.7}}, {{0, 0.3}, {1, 1}}));
+    const RayCastVolume tagged =
+        labelledVolume(26, {{-1, plain.transferFunctions.at(-1)},
+                            {1, transferFunction({{0, 0}, {1, 0.9}}, {{0, 1}, {1, 1}})},
+                            {3, transferFunction({{0, 0.3}, {1, 0.3}}, {{0, 0}, {1, 0}})}});
     RayCastVolume mip = plain;
     mip.mode = VolumeRenderMode::MIP;
     struct Case {
@@ -178,9 +161,7 @@ TEST_CASE("a bricked volume renders the same image as an unbricked one") {
     }
 }
 
-TEST_CASE("bricks beyond the budget are streamed: uploaded again each frame") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "bricks beyond the budget are streamed: uploaded again each frame") {
     auto root = Separator::create();
     auto node = GridVolume::create();
     node->description.data = makeSoftSphere(24, VoxelType::UByte);
@@ -209,17 +190,16 @@ TEST_CASE("bricks beyond the budget are streamed: uploaded again each frame") {
     CHECK(node->stats.brickUploads == second.brickUploads + 1);
 }
 
-TEST_CASE("bricks empty under the transfer function are neither uploaded nor drawn") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "bricks empty under the transfer function are neither uploaded nor drawn") {
     // Data only where x < 0: the bricks of the other half hold zeros, transparent under a
     // function whose alpha is 0 at v = 0.
-    RayCastVolume v;
-    v.data = makeGrid({32, 16, 16}, VoxelType::UByte, glm::dvec3(1.0), [](const glm::dvec3& p) {
+    const auto halfBlob = [](const glm::dvec3& p) {
         return p.x < -0.1 ? std::clamp(0.8 - 0.6 * glm::length(p + glm::dvec3(0.5, 0, 0)), 0.0, 1.0)
                           : 0.0;
-    });
-    v.transferFunctions[-1] = transferFunction({{0, 0}, {1, 0.8}});
+    };
+    RayCastVolume v = volumeOf(makeGrid({32, 16, 16}, VoxelType::UByte, glm::dvec3(1.0), halfBlob),
+                               transferFunction({{0, 0}, {1, 0.8}}));
     auto camera = framing(*v.data, {0.2f, 0.3f, 1.0f});
     SlicingSettings whole, bricked;
     bricked.textureBudget = 2 * 9 * 9 * 9; // bricks of at most 9^3 texels
@@ -242,9 +222,7 @@ TEST_CASE("bricks empty under the transfer function are neither uploaded nor dra
     CHECK(c.difference.rmse < 0.25 * k8Bit);
 }
 
-TEST_CASE("ClipPlanes remove exactly the clipped side") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "ClipPlanes remove exactly the clipped side") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0.05}, {1, 0.8}}, {{0, 1}, {1, 0.3}}));
     // Two planes, one of them under a transform: both apply to the volume after them.
@@ -260,29 +238,22 @@ TEST_CASE("ClipPlanes remove exactly the clipped side") {
     auto camera = framing(*scene.data->grid(), {0.4f, 0.5f, 1.0f});
     const Image gl = renderScene(renderer, *scene.root, *camera, 48);
 
-    RayCastVolume v;
-    v.data = scene.data->grid();
-    v.transferFunctions[-1] = scene.transfer->function();
+    RayCastVolume v = scene.description();
     const glm::dmat4 rotated = Rotation{glm::vec3(0, 0, 1), 0.5f}.matrix();
     v.model = rotated; // the Volume is after the Transform
     v.clipPlanes = {ClipPlane::worldPlane(first->plane(), glm::dmat4(1.0)),
                     ClipPlane::worldPlane(second->plane(), rotated)};
     const Image ref = referenceImage(rayCamera(*camera, 48, 48), {v});
     keepImage(gl, "clip-planes");
-    const ImageDifference d = difference(gl, ref);
-    MESSAGE("rmse " << d.rmse * 255 << "/255, max " << d.max * 255 << "/255");
     // Where a clip plane cuts a ray between two planes the slab is cut exactly.
-    CHECK(d.rmse < 0.2 * k8Bit);
-    CHECK(d.max < 2.0 * k8Bit);
+    checkDifference(difference(gl, ref), 0.2, 2.0);
     // Unclipped, the image differs a lot: the planes do remove part of the sphere.
     RayCastVolume whole = v;
     whole.clipPlanes.clear();
     CHECK(difference(gl, referenceImage(rayCamera(*camera, 48, 48), {whole})).max > 0.2);
 }
 
-TEST_CASE("BoxClip inside and outside opacity and colour match the reference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "BoxClip inside and outside opacity and colour match the reference") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0.1}, {1, 0.7}}, {{0, 1}, {1, 0.2}}));
     auto box = BoxClip::create();
@@ -315,47 +286,34 @@ TEST_CASE("BoxClip inside and outside opacity and colour match the reference") {
         box->outsideColor = glm::vec3(0, 0, 1);
         box->outsideColorWeight = c.outsideWeight;
         const Image gl = renderScene(renderer, *scene.root, *camera, 48);
-        RayCastVolume v;
-        v.data = scene.data->grid();
-        v.transferFunctions[-1] = scene.transfer->function();
+        RayCastVolume v = scene.description();
         v.boxClip = settingsOf(*box);
         const Image ref = referenceImage(rayCamera(*camera, 48, 48), {v});
-        const ImageDifference d = difference(gl, ref);
         keepImage(gl, "boxclip-" + std::to_string(int(10 * c.outsideOpacity)));
         MESSAGE("inside " << c.insideOpacity << " outside " << c.outsideOpacity << " weights "
-                          << c.insideWeight << "/" << c.outsideWeight << ": rmse " << d.rmse * 255
-                          << "/255, max " << d.max * 255 << "/255");
+                          << c.insideWeight << "/" << c.outsideWeight);
         // A slab cut by a box face gets each region's opacity and colour for its length.
-        CHECK(d.rmse < 0.2 * k8Bit);
-        CHECK(d.max < 1.5 * k8Bit);
+        checkDifference(difference(gl, ref), 0.2, 1.5);
     }
 }
 
-TEST_CASE("planeOpacity scales extinction over view depth as the reference does") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture,
+                  "planeOpacity scales extinction over view depth as the reference does") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0.1}, {1, 0.8}}, {{0, 1}, {1, 0}}, {{0, 0}, {1, 1}}));
     scene.volume->planeOpacity = {glm::vec2(0, 0), glm::vec2(0.4f, 1), glm::vec2(0.7f, 0.2f),
                                   glm::vec2(1, 1)};
     auto camera = framing(*scene.data->grid(), {-0.5f, 0.3f, 1.0f});
     const Image gl = renderScene(renderer, *scene.root, *camera, 48);
-    RayCastVolume v;
-    v.data = scene.data->grid();
-    v.transferFunctions[-1] = scene.transfer->function();
+    RayCastVolume v = scene.description();
     v.planeOpacity = {{0, 0}, {0.4, 1}, {0.7, 0.2}, {1, 1}};
-    const Image ref = referenceImage(rayCamera(*camera, 48, 48), {v});
-    const ImageDifference d = difference(gl, ref);
-    MESSAGE("rmse " << d.rmse * 255 << "/255, max " << d.max * 255 << "/255");
-    CHECK(d.rmse < 0.25 * k8Bit);
-    CHECK(d.max < 2.0 * k8Bit);
+    checkDifference(difference(gl, referenceImage(rayCamera(*camera, 48, 48), {v})), 0.25, 2.0);
     v.planeOpacity.clear();
     CHECK(difference(gl, referenceImage(rayCamera(*camera, 48, 48), {v})).max > 0.1);
 }
 
-TEST_CASE("an opaque cube inside the volume hides what is behind it and is dimmed in front") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture, "an opaque cube inside the volume hides what is behind it and is dimmed in front") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0.05}, {1, 0.5}}, {{0, 0.2}, {1, 0.2}},
                                       {{0, 0.4}, {1, 1}}, {{0, 1}, {1, 0.3}}));
@@ -392,16 +350,10 @@ TEST_CASE("an opaque cube inside the volume hides what is behind it and is dimme
             behind.opaqueDistance.push_back(
                 enter <= exit && enter > 0.0 ? enter : std::numeric_limits<double>::infinity());
         }
-    RayCastVolume v;
-    v.data = scene.data->grid();
-    v.transferFunctions[-1] = scene.transfer->function();
-    const Image ref = referenceImage(rays, {v}, glm::dvec3(0.0), &behind);
+    const Image ref = referenceImage(rays, {scene.description()}, glm::dvec3(0.0), &behind);
     keepImage(gl, "cube-in-volume-gl");
     keepImage(ref, "cube-in-volume-ref");
-    const ImageDifference d = difference(gl, ref);
-    MESSAGE("rmse " << d.rmse * 255 << "/255, max " << d.max * 255 << "/255");
-    CHECK(d.rmse < 0.2 * k8Bit);
-    CHECK(d.max < 1.5 * k8Bit);
+    checkDifference(difference(gl, ref), 0.2, 1.5);
     // At the centre the red cube shows through the part of the volume in front of it,
     // dimmed: redder than the volume alone, darker than the bare cube.
     const glm::vec4 centre = gl.at(size / 2, size / 2);
@@ -409,41 +361,28 @@ TEST_CASE("an opaque cube inside the volume hides what is behind it and is dimme
     CHECK(centre.r < cubeAlone.at(size / 2, size / 2).r - 0.1f);
 }
 
-TEST_CASE("a camera inside the volume sees only what is in front of its near plane") {
-    OSMesaContext context;
-    Renderer renderer;
-    RayCastVolume v;
-    v.data = makeGrid({24, 24, 24}, VoxelType::UByte, glm::dvec3(1.0), blob);
-    v.transferFunctions[-1] = transferFunction({{0, 0.02}, {1, 0.3}}, {{0, 0.2}, {1, 1}});
+TEST_CASE_FIXTURE(GlFixture,
+                  "a camera inside the volume sees only what is in front of its near plane") {
+    const RayCastVolume v =
+        volumeOf(makeGrid({24, 24, 24}, VoxelType::UByte, glm::dvec3(1.0), blob),
+                 transferFunction({{0, 0.02}, {1, 0.3}}, {{0, 0.2}, {1, 1}}));
     for (const glm::vec3 eye : {glm::vec3(0, 0, 6), glm::vec3(3, -2, 4)}) {
         auto camera = perspectiveAt(eye, 1.2f, 0.5f, 100.0f);
         const Comparison c = compareGrid(renderer, v, {}, *camera, 48);
         keepImage(c.gl, "inside-" + std::to_string(int(eye.x)));
-        MESSAGE("eye " << eye.x << "," << eye.y << "," << eye.z << ": " << c.stats.planes
-                       << " planes, rmse " << c.difference.rmse * 255 << "/255, max "
-                       << c.difference.max * 255 << "/255");
-        CHECK(c.stats.sliceTriangles > 0);
-        CHECK(c.difference.rmse < 0.5 * k8Bit);
-        CHECK(c.difference.max < 2.0 * k8Bit);
+        checkSliced(c, 0.5, 2.0, "eye " + text(eye) + ": ");
     }
 }
 
-TEST_CASE("pre-integration cuts the error of a spiky transfer function") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "pre-integration cuts the error of a spiky transfer function") {
     // A thin opaque shell where the soft sphere crosses v = 0.5.
-    RayCastVolume v;
-    v.data = makeSoftSphere(24, VoxelType::UShort);
-    v.transferFunctions[-1] =
-        transferFunction({{0, 0}, {0.47, 0}, {0.5, 0.9}, {0.53, 0}, {1, 0}}, {{0, 1}, {1, 1}},
-                         {{0, 0.8}, {1, 0.8}}, {{0, 0.2}, {1, 0.2}});
+    const RayCastVolume v = volumeOf(makeSoftSphere(24, VoxelType::UShort),
+                                     transferFunction(spike(0.47, 0.5, 0.53), {{0, 1}, {1, 1}},
+                                                      {{0, 0.8}, {1, 0.8}}, {{0, 0.2}, {1, 0.2}}));
     auto camera = framing(*v.data, {0.3f, 0.2f, 1.0f});
     SlicingSettings post;
     post.numPlanes = 40; // under one plane per voxel along the view
-    SlicingSettings pre = post;
-    pre.preIntegrated = true;
-    const Comparison a = compareGrid(renderer, v, post, *camera, 48);
-    const Comparison b = compareGrid(renderer, v, pre, *camera, 48);
+    const auto [a, b] = compareSettings(renderer, v, post, preIntegrated(post), *camera, 48);
     keepImage(a.gl, "spiky-post");
     keepImage(b.gl, "spiky-pre");
     keepImage(a.reference, "spiky-ref");
@@ -457,9 +396,7 @@ TEST_CASE("pre-integration cuts the error of a spiky transfer function") {
     CHECK(b.difference.rmse < 2.0 * k8Bit);
 }
 
-TEST_CASE("lighting shades the side of the volume that faces the light") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "lighting shades the side of the volume that faces the light") {
     NodeVolume scene(VolumeData::SOFT_SPHERE, 24,
                      transferFunction({{0, 0}, {0.3, 0}, {0.35, 0.9}, {1, 0.9}}, {{0, 1}, {1, 1}},
                                       {{0, 1}, {1, 1}}, {{0, 1}, {1, 1}}));
@@ -486,15 +423,12 @@ TEST_CASE("lighting shades the side of the volume that faces the light") {
     CHECK(difference(lit, unlit).max > 0.2);
 }
 
-TEST_CASE("two volumes side by side match the reference") {
-    OSMesaContext context;
-    Renderer renderer;
-    RayCastVolume a, b;
-    a.data = makeSoftSphere(16, VoxelType::UByte);
-    a.transferFunctions[-1] = transferFunction({{0, 0}, {1, 0.8}}, {{0, 1}, {1, 1}});
+TEST_CASE_FIXTURE(GlFixture, "two volumes side by side match the reference") {
+    RayCastVolume a = volumeOf(makeSoftSphere(16, VoxelType::UByte),
+                               transferFunction({{0, 0}, {1, 0.8}}, {{0, 1}, {1, 1}}));
     a.model = glm::translate(glm::dmat4(1.0), glm::dvec3(-10, 0, 0));
-    b.data = makeGrid({12, 16, 10}, VoxelType::Float, glm::dvec3(1.0), blob);
-    b.transferFunctions[-1] = transferFunction({{0.2, 0}, {1, 0.6}}, {{0, 0}, {1, 0}});
+    RayCastVolume b = volumeOf(makeGrid({12, 16, 10}, VoxelType::Float, glm::dvec3(1.0), blob),
+                               transferFunction({{0.2, 0}, {1, 0.6}}, {{0, 0}, {1, 0}}));
     b.model = glm::translate(glm::dmat4(1.0), glm::dvec3(10, 2, -3)) *
               glm::rotate(glm::dmat4(1.0), 0.4, glm::dvec3(0, 1, 0));
     auto root = Separator::create();
@@ -507,25 +441,19 @@ TEST_CASE("two volumes side by side match the reference") {
     const Image gl = renderScene(renderer, *root, *camera, 64);
     const Image ref = referenceImage(rayCamera(*camera, 64, 64), {a, b});
     keepImage(gl, "two-volumes");
-    const ImageDifference d = difference(gl, ref);
-    MESSAGE("rmse " << d.rmse * 255 << "/255, max " << d.max * 255 << "/255");
-    CHECK(d.rmse < 0.25 * k8Bit);
-    CHECK(d.max < 2.0 * k8Bit);
+    checkDifference(difference(gl, ref), 0.25, 2.0);
 }
 
-TEST_CASE("tagged MIP carries each maximum's tag and BoxClip region to the composite") {
-    OSMesaContext context;
-    Renderer renderer;
-    const LabelledVolume labelled = makeLabelledVolume(20);
-    RayCastVolume v;
-    v.data = labelled.data;
-    v.tags = labelled.tags;
-    v.mode = VolumeRenderMode::MIP;
-    v.transferFunctions[-1] = transferFunction({{0, 0}, {1, 1}}, {{0, 0.5}, {1, 0.5}});
-    v.transferFunctions[1] =
-        transferFunction({{0, 0.5}, {1, 1}}, {{0, 1}, {1, 1}}, {{0, 0}, {1, 0}}, {{0, 0}, {1, 0}});
-    v.transferFunctions[2] = transferFunction({{0, 0.2}, {1, 0.9}}, {{0, 0}, {1, 0}},
-                                              {{0, 1}, {1, 1}}, {{0, 0}, {1, 0}});
+TEST_CASE_FIXTURE(GlFixture,
+                  "tagged MIP carries each maximum's tag and BoxClip region to the composite") {
+    RayCastVolume v =
+        labelledVolume(20,
+                       {{-1, transferFunction({{0, 0}, {1, 1}}, {{0, 0.5}, {1, 0.5}})},
+                        {1, transferFunction({{0, 0.5}, {1, 1}}, {{0, 1}, {1, 1}}, {{0, 0}, {1, 0}},
+                                             {{0, 0}, {1, 0}})},
+                        {2, transferFunction({{0, 0.2}, {1, 0.9}}, {{0, 0}, {1, 0}},
+                                             {{0, 1}, {1, 1}}, {{0, 0}, {1, 0}})}},
+                       VolumeRenderMode::MIP);
     RayCastBoxClip clip;
     clip.origin = glm::dvec3(-10, -10, -10);
     clip.extent = glm::dvec3(10, 20, 20);
@@ -546,15 +474,12 @@ TEST_CASE("tagged MIP carries each maximum's tag and BoxClip region to the compo
     CHECK(c.gl.at(18, 24).b > c.gl.at(30, 24).b + 0.2f);
 }
 
-TEST_CASE("NEAREST interpolation shows each voxel's value unblended") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(GlFixture, "NEAREST interpolation shows each voxel's value unblended") {
     // Opaque at the front face, 8 voxels along x: an orthographic view straight on shows
     // exactly 8 distinct reds with NEAREST and a smooth ramp with LINEAR.
-    RayCastVolume v;
-    v.data = makeRamp({8, 4, 4}, VoxelType::UByte, 0, 0.0, 255.0);
-    v.transferFunctions[-1] =
-        transferFunction({{0, 1}, {1, 1}}, {{0, 0}, {1, 1}}, {{0, 0}, {1, 0}}, {{0, 0}, {1, 0}});
+    const RayCastVolume v = volumeOf(
+        makeRamp({8, 4, 4}, VoxelType::UByte, 0, 0.0, 255.0),
+        transferFunction({{0, 1}, {1, 1}}, {{0, 0}, {1, 1}}, {{0, 0}, {1, 0}}, {{0, 0}, {1, 0}}));
     auto camera = orthographicAt({0, 0, 20}, 8.5f, 1.0f, 50.0f);
     SlicingSettings nearest;
     nearest.nearest = true;
@@ -576,9 +501,8 @@ TEST_CASE("NEAREST interpolation shows each voxel's value unblended") {
     CHECK(l.difference.max < 1.0 * k8Bit); // LINEAR is the reference's trilinear field
 }
 
-TEST_CASE("a scene file with clipping and a shape inside the volume matches renderReference") {
-    OSMesaContext context;
-    Renderer renderer;
+TEST_CASE_FIXTURE(
+    GlFixture, "a scene file with clipping and a shape inside the volume matches renderReference") {
     // The Volume's state gathered by the node and by collectVolumes() must agree: a Transform
     // between the BoxClip and the Volume, a ClipPlane under a Separator that ends before the
     // Volume (so it does not apply), a tagged function, an opaque cone inside.
@@ -602,16 +526,7 @@ Separator {
     RenderOptions options;
     options.width = options.height = 48;
     options.background = glm::vec3(0.05f, 0.05f, 0.1f);
-    const Image gl = renderer.render(*root, options);
-    RayCastOptions rays;
-    rays.tolerance = 2e-4;
-    const Image ref = renderReference(*root, options, nullptr, rays);
-    keepImage(gl, "scene-file-gl");
-    keepImage(ref, "scene-file-ref");
-    const ImageDifference d = difference(gl, ref);
-    MESSAGE("rmse " << d.rmse * 255 << "/255, max " << d.max * 255 << "/255");
-    CHECK(d.rmse < 0.3 * k8Bit);
-    CHECK(d.max < 4.0 * k8Bit);
+    checkDifference(compareScene(renderer, *root, options, "scene-file"), 0.3, 4.0);
     const std::vector<RayCastVolume> volumes = collectVolumes(*root);
     REQUIRE(volumes.size() == 1);
     CHECK(volumes[0].clipPlanes.size() == 1);

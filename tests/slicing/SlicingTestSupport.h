@@ -1,13 +1,17 @@
 #pragma once
 // Shared by the slicing tests: an offscreen renderer, the reference image of the same volume
-// description, image differences, and a node that slices an arbitrary VolumeGrid.
+// description, image differences, a node that slices an arbitrary VolumeGrid, and the volumes,
+// cameras, comparisons and checks the tests repeat.
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <volsg/context/OSMesaContext.h>
@@ -19,10 +23,22 @@
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/slicing/VolumeSlicer.h>
+#include <volsg/volume/TestVolumes.h>
 #include <volsg/volume/TransferFunction1D.h>
 #include <volsg/volume/VolumeGrid.h>
+#include <volsg/volumescene/ReferenceScene.h>
 
 namespace volsg::test {
+
+/// One step of 8-bit colour: the unit of the tests' error bounds.
+constexpr double k8Bit = 1.0 / 255.0;
+
+/// What most GL tests start with: a current offscreen context and a Renderer
+/// (TEST_CASE_FIXTURE(GlFixture, "...")).
+struct GlFixture {
+    OSMesaContext context;
+    Renderer renderer;
+};
 
 /// Slices a volume given directly as the rendering model describes it (any grid, any
 /// transfer functions), through the same VolumeSlicer the Volume node uses. Its model matrix
@@ -55,34 +71,33 @@ public:
     }
 };
 
-/// A perspective camera at `eye` looking at the origin (+Y up), near and far around it.
-inline ref_ptr<PerspectiveCamera> perspectiveAt(const glm::vec3& eye, float heightAngle,
-                                                float nearDistance, float farDistance) {
-    auto camera = PerspectiveCamera::create();
+/// A camera of type C at `eye` looking at the origin (+Y up), near and far around it.
+template <class C>
+ref_ptr<C> cameraAt(const glm::vec3& eye, float nearDistance, float farDistance) {
+    auto camera = C::create();
     camera->position = eye;
     const glm::vec3 forward = glm::normalize(-eye);
     const glm::vec3 axis = glm::cross(glm::vec3(0, 0, -1), forward);
     const float s = glm::length(axis);
     const float angle = std::atan2(s, glm::dot(glm::vec3(0, 0, -1), forward));
     camera->orientation = Rotation{s > 1e-6f ? axis / s : glm::vec3(0, 1, 0), angle};
-    camera->heightAngle = heightAngle;
     camera->nearDistance = nearDistance;
     camera->farDistance = farDistance;
     return camera;
 }
 
+/// A perspective camera at `eye` looking at the origin (+Y up), near and far around it.
+inline ref_ptr<PerspectiveCamera> perspectiveAt(const glm::vec3& eye, float heightAngle,
+                                                float nearDistance, float farDistance) {
+    auto camera = cameraAt<PerspectiveCamera>(eye, nearDistance, farDistance);
+    camera->heightAngle = heightAngle;
+    return camera;
+}
+
 inline ref_ptr<OrthographicCamera> orthographicAt(const glm::vec3& eye, float height,
                                                   float nearDistance, float farDistance) {
-    auto camera = OrthographicCamera::create();
-    camera->position = eye;
-    const glm::vec3 forward = glm::normalize(-eye);
-    const glm::vec3 axis = glm::cross(glm::vec3(0, 0, -1), forward);
-    const float s = glm::length(axis);
-    const float angle = std::atan2(s, glm::dot(glm::vec3(0, 0, -1), forward));
-    camera->orientation = Rotation{s > 1e-6f ? axis / s : glm::vec3(0, 1, 0), angle};
+    auto camera = cameraAt<OrthographicCamera>(eye, nearDistance, farDistance);
     camera->height = height;
-    camera->nearDistance = nearDistance;
-    camera->farDistance = farDistance;
     return camera;
 }
 
@@ -251,6 +266,106 @@ inline ref_ptr<PerspectiveCamera> framing(const VolumeGrid& grid, glm::vec3 dire
     return perspectiveAt(glm::normalize(direction) * distance * extent,
                          2.0f * std::atan(0.45f / distance), 0.5f * distance * extent,
                          2.0f * distance * extent);
+}
+
+/// A volume of `data` under one transfer function (the default one, key -1).
+inline RayCastVolume volumeOf(ref_ptr<const VolumeGrid> data, const TransferFunction1D& function,
+                              VolumeRenderMode mode = VolumeRenderMode::DVR) {
+    RayCastVolume v;
+    v.data = std::move(data);
+    v.transferFunctions[-1] = function;
+    v.mode = mode;
+    return v;
+}
+
+/// makeLabelledVolume(n) with its tags, under `functions` by tag (-1: the default).
+inline RayCastVolume labelledVolume(int n, std::map<int, TransferFunction1D> functions,
+                                    VolumeRenderMode mode = VolumeRenderMode::DVR) {
+    const LabelledVolume labelled = makeLabelledVolume(n);
+    RayCastVolume v;
+    v.data = labelled.data;
+    v.tags = labelled.tags;
+    v.transferFunctions = std::move(functions);
+    v.mode = mode;
+    return v;
+}
+
+/// An alpha curve 0 but for a spike of `alpha` at `peak`, rising from `from` and gone at `to`.
+inline std::vector<PiecewiseLinear::Point> spike(double from, double peak, double to,
+                                                 double alpha = 0.9) {
+    return {{0, 0}, {from, 0}, {peak, alpha}, {to, 0}, {1, 0}};
+}
+
+/// `settings` with pre-integration.
+inline SlicingSettings preIntegrated(SlicingSettings settings) {
+    settings.preIntegrated = true;
+    return settings;
+}
+
+/// A smooth blob with a ripple: values in [0, 1], non-zero up to the box faces.
+inline double blob(const glm::dvec3& p) {
+    const double r = glm::length(p);
+    return std::clamp(0.55 - 0.45 * r + 0.15 * std::sin(4.0 * p.x) * std::cos(3.0 * p.y), 0.0, 1.0);
+}
+
+/// Marschner-Lobb 17^3 (16-bit) under a smooth transfer function of rising opacity.
+inline RayCastVolume marschnerLobbVolume() {
+    return volumeOf(
+        makeMarschnerLobb(17, VoxelType::UShort),
+        transferFunction({{0.3, 0}, {0.7, 0.8}}, {{0, 0.1}, {1, 1}}, {{0, 0.8}, {1, 0.3}}));
+}
+
+/// The same volume and camera sliced with two settings, first `a`, then `b`.
+inline std::pair<Comparison, Comparison>
+compareSettings(Renderer& renderer, const RayCastVolume& volume, const SlicingSettings& a,
+                const SlicingSettings& b, Camera& camera, int size) {
+    Comparison first = compareGrid(renderer, volume, a, camera, size);
+    return {std::move(first), compareGrid(renderer, volume, b, camera, size)};
+}
+
+/// Writes both images of a comparison for a look (VOLSG_TEST_IMAGES): NAME and NAME-ref.
+inline void keepImages(const Comparison& c, const std::string& name) {
+    keepImage(c.gl, name);
+    keepImage(c.reference, name + "-ref");
+}
+
+/// Logs `what` and the difference to the reference, and checks that its RMSE is below
+/// `rmse` / 255 and its largest channel difference below `max` / 255.
+inline void checkDifference(const ImageDifference& d, double rmse, double max,
+                            const std::string& what = {}) {
+    MESSAGE(what << "rmse " << d.rmse * 255 << "/255, max " << d.max * 255 << "/255");
+    CHECK(d.rmse < rmse * k8Bit);
+    CHECK(d.max < max * k8Bit);
+}
+
+/// Checks that the slicing drew triangles and, as checkDifference, how close it came to the
+/// reference; the message names `what` and the plane count.
+inline void checkSliced(const Comparison& c, double rmse, double max,
+                        const std::string& what = {}) {
+    CHECK(c.stats.sliceTriangles > 0);
+    checkDifference(c.difference, rmse, max, what + std::to_string(c.stats.planes) + " planes: ");
+}
+
+/// "x,y,z", as a stream writes the numbers.
+inline std::string text(const glm::vec3& v) {
+    std::ostringstream out;
+    out << v.x << "," << v.y << "," << v.z;
+    return out.str();
+}
+
+/// A scene drawn by GL and by the reference (renderReference at tolerance 2e-4: GL's opaque
+/// geometry, the volumes ray cast) with the same options; the images are kept as NAME-gl and
+/// NAME-ref.
+inline ImageDifference compareScene(Renderer& renderer, Node& root, const RenderOptions& options,
+                                    const std::string& name, Image* glImage = nullptr) {
+    const Image gl = renderer.render(root, options);
+    RayCastOptions rays;
+    rays.tolerance = 2e-4;
+    const Image ref = renderReference(root, options, nullptr, rays);
+    keepImage(gl, name + "-gl");
+    keepImage(ref, name + "-ref");
+    if (glImage) *glImage = gl;
+    return difference(gl, ref);
 }
 
 } // namespace volsg::test

@@ -79,9 +79,7 @@ LoadedCase loadCase(const NodeCase& c, const NodeSuiteSettings& st) {
     out.root = readScene(file.string());
     out.volume = findVolume(*out.root);
     if (!out.volume) throw Error(file.string() + " has no Volume named " + kVolumeName);
-    RenderOptions options;
-    options.width = st.width;
-    options.height = st.height;
+    const RenderOptions options = suiteOptions(st);
     out.views = makeOrbitViews(*out.root, options, st.frames, st.errorFrames);
     const std::vector<RayCastVolume> volumes = collectVolumes(*out.root);
     const VolumeGrid& grid = *volumes.at(0).data;
@@ -155,9 +153,7 @@ Reference referenceOf(LoadedCase& c, int mode, const NodeSuiteSettings& st) {
     c.volume->renderMode = mode;
     c.volume->lighting = false;
     Reference out;
-    RenderOptions options;
-    options.width = st.width;
-    options.height = st.height;
+    RenderOptions options = suiteOptions(st);
     options.background = st.background;
     RayCastOptions rayOptions;
     rayOptions.tolerance = st.tolerance;
@@ -225,9 +221,7 @@ NodeRow measure(LoadedCase& c, const NodeSetting& setting, const Reference& refe
         setting.planesPerVoxel > 0.0 ? int(std::ceil(setting.planesPerVoxel * c.diagonalInL0)) : 0;
     volume.interactivePlanes = 0;
 
-    RenderOptions options;
-    options.width = st.width;
-    options.height = st.height;
+    RenderOptions options = suiteOptions(st);
     options.background = st.background;
     options.interactive = setting.interactive;
     Renderer renderer;

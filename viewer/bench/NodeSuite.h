@@ -10,6 +10,7 @@
 
 #include "BenchRow.h"
 #include <volsg/context/Context.h>
+#include <volsg/render/FrameContext.h>
 
 namespace volsg::bench {
 
@@ -23,6 +24,7 @@ struct NodeSuiteSettings {
     std::vector<double> planesPerVoxel{0.25}; ///< extra still settings besides the automatic
     glm::vec3 background{0.0f};
     Backend backend = Backend::OSMesa;
+    RenderDebug debug;              ///< volsg-bench's debug switches (--no-empty-cells ...)
     std::string scenesDir;          ///< holds node-*.iv
     std::vector<std::string> cases; ///< case names to run; empty = all
     std::vector<std::string> kinds; ///< "dvr", "dvr-lit", "mip"; empty = all

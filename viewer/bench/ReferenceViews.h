@@ -11,6 +11,16 @@
 
 namespace volsg::bench {
 
+/// The RenderOptions of a suite's frames: its size (`st.width`, `st.height`) and volsg-bench's
+/// debug switches (`st.debug`).
+template <class SuiteSettings> RenderOptions suiteOptions(const SuiteSettings& st) {
+    RenderOptions options;
+    options.width = st.width;
+    options.height = st.height;
+    options.debug = st.debug;
+    return options;
+}
+
 /// `frames` cameras orbiting the scene's centre (the scene's camera turned about the vertical
 /// axis by 2 pi i / frames), and which of them are compared with the reference: `errorFrames`
 /// indices spread evenly (0, frames/K, 2 frames/K, ...; all of them when K >= frames).

@@ -193,9 +193,7 @@ std::vector<BenchRow> runRtvrSuite(const RtvrSuiteSettings& st) {
             if (m == 0) voxels = sceneVoxels(*root, volume, file);
             applyMode(volume, scene, mode);
 
-            RenderOptions options;
-            options.width = st.width;
-            options.height = st.height;
+            RenderOptions options = suiteOptions(st);
             const OrbitViews views = makeOrbitViews(*root, options, st.frames, 0);
             Renderer renderer;
             options.camera = views.cameras[0];

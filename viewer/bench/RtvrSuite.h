@@ -8,6 +8,7 @@
 
 #include "BenchRow.h"
 #include <volsg/context/Context.h>
+#include <volsg/render/FrameContext.h>
 
 namespace volsg::bench {
 
@@ -38,6 +39,7 @@ struct RtvrSuiteSettings {
     /// Folder of the rtvr-*.iv files; empty: VOLSG_RTVR_SCENE_DIR (compiled in), or the
     /// environment variable of that name when set.
     std::string sceneDir;
+    RenderDebug debug; ///< volsg-bench's debug switches (--no-empty-cells ...)
 };
 
 /// Renders every scene in every mode and prints one row per scene and mode: the scene's

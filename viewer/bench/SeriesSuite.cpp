@@ -11,6 +11,7 @@
 
 #include <sys/resource.h>
 
+#include "ReferenceViews.h"
 #include "Timing.h"
 #include <volsg/actions/SearchAction.h>
 #include <volsg/core/Error.h>
@@ -112,8 +113,10 @@ void runVariant(const SeriesSuiteSettings& st, RenderOptions options, double bud
                                        : "ShearWarpVolume, spill files of arrays only (before)")
                            : (improved ? "Volume, uploads staged in a pixel buffer (after)"
                                        : "Volume, direct uploads (before)");
-    // The slicer's debug switch; the cache's setting.
-    options.debug.textureStaging = !(node == SeriesNode::Volume && !improved);
+    // The slicer's debug switch (off for every run with --no-texture-staging); the cache's
+    // setting.
+    options.debug.textureStaging =
+        options.debug.textureStaging && !(node == SeriesNode::Volume && !improved);
     const ref_ptr<Node> root = readSceneFromString(seriesScene(st, budget, node));
     auto* series = static_cast<VolumeSeries*>(findByName(*root, "SERIES"));
     if (!series) throw Error("series suite scene has no SERIES node");
@@ -244,9 +247,7 @@ void runVariant(const SeriesSuiteSettings& st, RenderOptions options, double bud
 int runSeriesSuite(const SeriesSuiteSettings& st) {
     if (st.steps < 4) throw Error("the series suite needs at least 4 steps");
     auto context = Context::createOffscreen(st.backend);
-    RenderOptions options;
-    options.width = st.width;
-    options.height = st.height;
+    const RenderOptions options = suiteOptions(st);
     const double budget = st.budgetMegabytes > 0 ? st.budgetMegabytes : defaultBudget(st, options);
     std::printf("series suite: %d steps of %d^3 (MOVING_SPHERE), %dx%d, budget %.1f MB, "
                 "prefetch %d, play period %.0f ms; each run starts with an empty cache\n",

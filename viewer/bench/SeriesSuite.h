@@ -3,6 +3,7 @@
 // (lib/volsg/series) with a memory budget smaller than the series.
 
 #include <volsg/context/Context.h>
+#include <volsg/render/FrameContext.h>
 
 namespace volsg::bench {
 
@@ -15,6 +16,7 @@ struct SeriesSuiteSettings {
     int prefetch = 2;
     bool shearWarp = true, volume = true; ///< which nodes' runs to make
     Backend backend = Backend::OSMesa;
+    RenderDebug debug; ///< volsg-bench's debug switches (--no-empty-cells ...)
 };
 
 /// Runs the series four times in one sitting, each from an empty cache: ShearWarpVolume with

@@ -166,9 +166,7 @@ BenchRow measureSlicing(Node& root, Volume& volume, const SuiteScene& scene,
     volume.numPlanes = int(std::ceil(setting.planesPerVoxel * glm::length(dims)));
     volume.interactivePlanes = 0;
     volume.preIntegrated = setting.preIntegrated;
-    RenderOptions options;
-    options.width = st.width;
-    options.height = st.height;
+    RenderOptions options = suiteOptions(st);
     options.background = st.background;
     options.interactive = setting.interactive;
     try {
@@ -216,10 +214,8 @@ BenchRow measureShearWarp(Node& root, ShearWarpVolume& volume, const SuiteScene&
     row.pointLabel = format("%g thr", threads);
     volume.threads = threads;
     volume.optimize = optimized;
-    RenderOptions options;
+    RenderOptions options = suiteOptions(st);
     options.interactive = interactive;
-    options.width = st.width;
-    options.height = st.height;
     options.background = st.background;
     try {
         Renderer renderer;
@@ -315,9 +311,7 @@ std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
         Volume* volume = findSuiteVolume(*root);
         if (!volume) throw Error("suite scene " + scene.name + " has no " + kVolumeName);
 
-        RenderOptions options;
-        options.width = st.width;
-        options.height = st.height;
+        RenderOptions options = suiteOptions(st);
         options.background = st.background;
         const OrbitViews views = makeOrbitViews(*root, options, st.frames, st.errorFrames);
 

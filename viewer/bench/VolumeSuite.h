@@ -9,6 +9,7 @@
 
 #include "BenchRow.h"
 #include <volsg/context/Context.h>
+#include <volsg/render/FrameContext.h>
 
 namespace volsg::bench {
 
@@ -34,6 +35,7 @@ struct VolumeSuiteSettings {
     int side = 64;       ///< voxels per side of the generated volumes
     glm::vec3 background{0.0f};
     Backend backend = Backend::OSMesa;
+    RenderDebug debug;   ///< volsg-bench's debug switches (--no-empty-cells ...)
     std::string keepDir; ///< when set, the scene files are written there
 };
 

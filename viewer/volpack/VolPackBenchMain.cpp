@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -332,49 +331,39 @@ void runCase(const Case& c, const Settings& st) {
     }
 }
 
-int run(int argc, char** argv) {
-    cli::Arguments args(argc, argv);
+int run(cli::Arguments& args) {
     Settings st;
     std::vector<std::string> compare;
-    while (!args.empty()) {
-        const std::string a = args.take();
-        if (a == "--case") {
-            const std::string which = args.value(a);
-            if (which == "all")
-                st.cases = {"sphere", "ml", "ml-shaded"};
-            else
-                st.cases.push_back(which);
-        } else if (a == "--size")
-            st.size = args.intValue(a, 8, 4096);
-        else if (a == "--frames")
-            st.frames = args.intValue(a, 1, 100000);
-        else if (a == "--frame")
-            st.frame = args.intValue(a, 0, 100000);
-        else if (a == "--side")
-            st.side = args.intValue(a, 8, 1024);
-        else if (a == "--out")
-            st.out = args.value(a);
-        else if (a == "--reference")
-            st.reference = true;
-        else if (a == "--tolerance")
-            st.tolerance = std::stod(args.value(a));
-        else if (a == "--slice-step")
-            st.sliceStep = std::clamp(std::stoi(args.value(a)), 1, 16);
-        else if (a == "--max-ray-opacity")
-            st.maxRayOpacity = std::stod(args.value(a));
-        else if (a == "--no-pixel-shift")
-            st.pixelShift = false;
-        else if (a == "--shearwarp")
-            st.shearWarp = true;
-        else if (a == "--compare") {
-            compare.push_back(args.value(a));
-            compare.push_back(args.value(a));
-        } else if (a == "-h" || a == "--help") {
-            std::fputs(usage, stdout);
-            return 0;
-        } else
-            throw Error("unknown argument '" + a + "'");
-    }
+    const auto number = [](double& target) {
+        return [&target](const std::string& v) { target = std::stod(v); };
+    };
+    cli::Options table;
+    table
+        .value("--case",
+               [&](const std::string& which) {
+                   if (which == "all")
+                       st.cases = {"sphere", "ml", "ml-shaded"};
+                   else
+                       st.cases.push_back(which);
+               })
+        .integer("--size", st.size, 8, 4096)
+        .integer("--frames", st.frames, 1, 100000)
+        .integer("--frame", st.frame, 0, 100000)
+        .integer("--side", st.side, 8, 1024)
+        .value("--out", [&](const std::string& v) { st.out = v; })
+        .flag("--reference", st.reference)
+        .value("--tolerance", number(st.tolerance))
+        .value("--slice-step",
+               [&](const std::string& v) { st.sliceStep = std::clamp(std::stoi(v), 1, 16); })
+        .value("--max-ray-opacity", number(st.maxRayOpacity))
+        .flag("--no-pixel-shift", st.pixelShift, false)
+        .flag("--shearwarp", st.shearWarp)
+        .add("--compare", [&](cli::Arguments& words, const std::string& option) {
+            compare.push_back(words.value(option));
+            compare.push_back(words.value(option));
+        });
+    // No operands: a word that is not an option is an unknown argument.
+    if (!table.read(args, usage, nullptr)) return 0;
     if (!compare.empty()) {
         printError((compare[0] + " vs " + compare[1]).c_str(), readPfm(compare[0]),
                    readPfm(compare[1]));
@@ -395,10 +384,5 @@ int run(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "volsg-volpack-bench: %s\n", e.what());
-        return 1;
-    }
+    return volsg::cli::runTool("volsg-volpack-bench", argc, argv, run);
 }

@@ -1,5 +1,3 @@
-#include <volsg/core/Error.h>
-#include <volsg/gl/Shader.h>
 #include <volsg/gltf/GltfAsset.h>
 #include <volsg/gltf/GltfGpuAsset.h>
 #include <volsg/gltf/GltfRenderer.h>
@@ -7,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -17,21 +14,13 @@ namespace {
 
 constexpr float kAmbientIntensity = 0.2f; // Inventor's default SoEnvironment
 
-std::string prelude(int maxClipPlanes) {
-    return "#version 330 core\n#define MAX_LIGHTS " + std::to_string(ShapeRenderer::kMaxLights) +
-           "\n#define MAX_CLIP_PLANES " + std::to_string(maxClipPlanes) + "\n";
-}
-
 } // namespace
 
 GltfRenderer::GltfRenderer() {
-    GLint maxDistances = 8;
-    glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxDistances);
-    maxClipPlanes_ = std::clamp(int(maxDistances), 1, kMaxClipPlanes);
-    const std::string p = prelude(maxClipPlanes_);
-    const Shader vertex(GL_VERTEX_SHADER, p + shaders::gltfVertex, "glTF");
-    const Shader fragment(GL_FRAGMENT_SHADER, p + shaders::gltfFragment, "glTF");
-    program_ = Program({&vertex, &fragment}, "glTF");
+    maxClipPlanes_ = queryMaxClipPlanes(kMaxClipPlanes);
+    program_ =
+        shaders::surfaceProgram(shaders::gltfVertex, shaders::gltfFragment, maxClipPlanes_, "glTF");
+    scopeLocations_ = SurfaceScope::Locations::of(program_);
     program_.use();
     program_.set("uBaseColorTexture", 0);
     program_.set("uMetallicRoughnessTexture", 1);
@@ -77,22 +66,8 @@ void GltfRenderer::submit(const FrameContext& frame, const GltfAsset& asset,
             if (!p.indices.empty() && blended(p) == (pass == RenderPass::Transparent)) any = true;
     if (!any) return;
 
-    if (look.lights.size() > std::size_t(kMaxLights))
-        throw Error(std::to_string(look.lights.size()) +
-                    " lights are in scope of a GltfModel; at most " + std::to_string(kMaxLights) +
-                    " light it");
-    node.lightCount = int(look.lights.size());
-    for (std::size_t i = 0; i < look.lights.size(); ++i) {
-        node.lightVectors[i] = look.lights[i].vector;
-        node.lightColors[i] = look.lights[i].color;
-    }
-    if (look.clipPlanes.size() > std::size_t(maxClipPlanes_))
-        throw Error(std::to_string(look.clipPlanes.size()) +
-                    " ClipPlanes are in scope of a GltfModel, but this OpenGL clips with at most " +
-                    std::to_string(maxClipPlanes_) + " (GL_MAX_CLIP_DISTANCES)");
-    node.clipPlaneCount = int(look.clipPlanes.size());
-    for (std::size_t i = 0; i < look.clipPlanes.size(); ++i)
-        node.clipPlanes[i] = glm::vec4(look.clipPlanes[i]);
+    node.scope.setLights(look.lights, "a GltfModel", "it");
+    node.scope.setClipPlanes(look.clipPlanes, maxClipPlanes_, "a GltfModel");
 
     ShapeRenderer& shapes = frame.shapes;
     const glm::dmat4& nodeModel = look.model;
@@ -143,14 +118,8 @@ void GltfRenderer::draw(ShapeRenderer& shapes, const NodeState& node, const Draw
     p.set("uModel", item.model);
     p.set("uNormalMatrix", item.normalMatrix);
 
-    p.set("uClipPlaneCount", node.clipPlaneCount);
-    if (node.clipPlaneCount > 0) p.set("uClipPlanes", node.clipPlanes.data(), node.clipPlaneCount);
-    shapes.setClipDistances(node.clipPlaneCount);
-    p.set("uLightCount", node.lightCount);
-    if (node.lightCount > 0) {
-        p.set("uLightVector", node.lightVectors.data(), node.lightCount);
-        p.set("uLightColor", node.lightColors.data(), node.lightCount);
-    }
+    node.scope.upload(scopeLocations_);
+    shapes.setClipDistances(node.scope.clipPlaneCount);
     p.set("uExtraEmissive", node.extraEmissive);
     p.set("uAlphaScale", node.alphaScale);
     p.set("uBoxClip", node.boxClip ? 1 : 0);

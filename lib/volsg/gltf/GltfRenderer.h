@@ -88,16 +88,11 @@ public:
                 const GltfLook& look);
 
 private:
-    static constexpr int kMaxLights = ShapeRenderer::kMaxLights;
     static constexpr int kMaxClipPlanes = ShapeRenderer::kMaxClipPlanes;
 
     /// What every primitive of one node's render shares: state gathered once.
     struct NodeState {
-        int lightCount = 0;
-        std::array<glm::vec4, kMaxLights> lightVectors{};
-        std::array<glm::vec3, kMaxLights> lightColors{};
-        int clipPlaneCount = 0;
-        std::array<glm::vec4, kMaxClipPlanes> clipPlanes{};
+        SurfaceScope scope;
         glm::vec3 extraEmissive{0.0f};
         float alphaScale = 1.0f;
         bool boxClip = false;
@@ -119,6 +114,7 @@ private:
     void draw(ShapeRenderer& shapes, const NodeState& node, const DrawItem& item);
 
     Program program_;
+    SurfaceScope::Locations scopeLocations_{};
     int maxClipPlanes_ = 8;
     RenderView view_;
 };

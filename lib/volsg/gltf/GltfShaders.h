@@ -1,55 +1,33 @@
 #pragma once
 // GLSL of the glTF program: metallic-roughness PBR (GGX) lit by the scene's Inventor lights.
-// Compiled with "#version 330 core" and the MAX_LIGHTS / MAX_CLIP_PLANES defines in front.
+// Each stage follows the prelude and the shared surface code
+// (lib/volsg/render/SurfaceShaders.h).
 // The model is written out in GltfRenderer.h.
 
 namespace volsg::shaders {
 
 inline constexpr const char* gltfVertex = R"GLSL(
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec4 aTangent;
-layout(location = 3) in vec2 aTexCoord0;
 layout(location = 4) in vec2 aTexCoord1;
 layout(location = 5) in vec4 aColor;
 
-uniform mat4 uModel;
-uniform mat3 uNormalMatrix;
-uniform mat4 uViewProjection;
-uniform vec4 uClipPlanes[MAX_CLIP_PLANES]; // world (n, d): keep dot(n, p) >= d
-uniform int uClipPlaneCount;
-
-out vec3 vWorldPosition;
-out vec3 vWorldNormal;
 out vec4 vWorldTangent;
 out vec2 vTexCoord0;
 out vec2 vTexCoord1;
-out vec4 vColor;
-out float gl_ClipDistance[MAX_CLIP_PLANES];
 
 void main() {
-    vec4 world = uModel * vec4(aPosition, 1.0);
-    vWorldPosition = world.xyz;
-    vWorldNormal = uNormalMatrix * aNormal;
+    transformVertex();
     vWorldTangent = vec4(mat3(uModel) * aTangent.xyz, aTangent.w);
     vTexCoord0 = aTexCoord0;
     vTexCoord1 = aTexCoord1;
     vColor = aColor;
-    // Planes beyond the count read 1: harmless if a shape left their switch on.
-    for (int i = 0; i < MAX_CLIP_PLANES; ++i)
-        gl_ClipDistance[i] =
-            i < uClipPlaneCount ? dot(uClipPlanes[i].xyz, world.xyz) - uClipPlanes[i].w : 1.0;
-    gl_Position = uViewProjection * world;
 }
 )GLSL";
 
 inline constexpr const char* gltfFragment = R"GLSL(
-in vec3 vWorldPosition;
-in vec3 vWorldNormal;
 in vec4 vWorldTangent;
 in vec2 vTexCoord0;
 in vec2 vTexCoord1;
-in vec4 vColor;
 
 // Textures: units 0..4; uUse* false means the texture is absent. uSet* picks TEXCOORD_0/1.
 uniform sampler2D uBaseColorTexture, uMetallicRoughnessTexture, uNormalTexture,
@@ -73,11 +51,7 @@ uniform bool uHasNormals;   // else flat normals from the screen-space derivativ
 uniform bool uHasTangents;  // else a tangent frame from the derivatives of position and UV
 uniform bool uHasColors;
 
-uniform vec4 uViewer; // eye position (w = 1) or direction towards the viewer (w = 0)
-uniform int uLightCount;
-uniform vec4 uLightVector[MAX_LIGHTS]; // position (w = 1) or direction towards the light (w = 0)
-uniform vec3 uLightColor[MAX_LIGHTS];  // intensity * colour
-uniform float uAmbient;                // Inventor's environment: 0.2
+uniform float uAmbient; // Inventor's environment: 0.2
 
 uniform bool uBoxClip; // a BoxClip in scope: opacity inside and outside its box
 uniform mat4 uBoxFromWorld;
@@ -116,7 +90,7 @@ void main() {
         return;
     }
 
-    vec3 V = normalize(uViewer.xyz - vWorldPosition * uViewer.w);
+    vec3 V = towardsViewer();
     vec3 dpdx = dFdx(vWorldPosition), dpdy = dFdy(vWorldPosition);
     // The derivatives' cross product faces the viewer on either side; as the front face's
     // normal it points the other way on a back face.
@@ -172,7 +146,7 @@ void main() {
     vec3 color = emissive + uAmbient * base.rgb * occlusion;
     float NdotV = max(dot(N, V), 1e-4);
     for (int i = 0; i < uLightCount; ++i) {
-        vec3 L = normalize(uLightVector[i].xyz - vWorldPosition * uLightVector[i].w);
+        vec3 L = normalize(lightVector(i));
         float NdotL = dot(N, L);
         if (NdotL <= 0.0) continue;
         vec3 H = normalize(L + V);

@@ -1,12 +1,9 @@
-#include <volsg/core/Error.h>
 #include <volsg/fields/ImageField.h>
-#include <volsg/gl/Shader.h>
 #include <volsg/render/GpuMesh.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/render/ShapeShaders.h>
 
 #include <algorithm>
-#include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -22,32 +19,28 @@ glm::mat3 normalMatrixOf(const glm::dmat4& model) {
     return glm::mat3(glm::dmat3(glm::cross(b, c), glm::cross(c, a), glm::cross(a, b)));
 }
 
-std::string shaderPrelude(int maxClipPlanes) {
-    return "#version 330 core\n#define MAX_LIGHTS " + std::to_string(ShapeRenderer::kMaxLights) +
-           "\n#define MAX_CLIP_PLANES " + std::to_string(maxClipPlanes) + "\n";
-}
-
 } // namespace
 
 ShapeRenderer::ShapeRenderer() {
-    GLint maxDistances = 8;
-    glGetIntegerv(GL_MAX_CLIP_DISTANCES, &maxDistances);
-    maxClipPlanes_ = std::clamp(int(maxDistances), 1, kMaxClipPlanes);
-    const std::string prelude = shaderPrelude(maxClipPlanes_);
-    const Shader vertex(GL_VERTEX_SHADER, prelude + shaders::shapeVertex, "shape");
-    const Shader fragment(GL_FRAGMENT_SHADER, prelude + shaders::shapeFragment, "shape");
-    program_ = Program({&vertex, &fragment}, "shape");
+    maxClipPlanes_ = queryMaxClipPlanes(kMaxClipPlanes);
+    program_ = shaders::surfaceProgram(shaders::shapeVertex, shaders::shapeFragment, maxClipPlanes_,
+                                       "shape");
     ++programBuilds_;
     const Program& p = program_;
     auto at = [&p](const char* name) { return p.uniformLocation(name); };
-    loc_ = {at("uModel"),         at("uNormalMatrix"), at("uViewProjection"), at("uView"),
-            at("uTextureMatrix"), at("uClipPlanes"),   at("uClipPlaneCount"), at("uLit"),
-            at("uHasNormals"),    at("uHasColors"),    at("uEmissive"),       at("uAmbient"),
-            at("uDiffuse"),       at("uSpecular"),     at("uShininess"),      at("uAlpha"),
-            at("uViewer"),        at("uLightCount"),   at("uLightVector"),    at("uLightColor"),
-            at("uSpot"),          at("uSpotExponent"), at("uAttenuation"),    at("uTextureModel"),
-            at("uSphereMap"),     at("uTexture"),      at("uBlendColor"),     at("uFogType"),
-            at("uFogColor"),      at("uFogVisibility")};
+    loc_ = {at("uModel"),          at("uNormalMatrix"),
+            at("uViewProjection"), at("uView"),
+            at("uTextureMatrix"),  at("uLit"),
+            at("uHasNormals"),     at("uHasColors"),
+            at("uEmissive"),       at("uAmbient"),
+            at("uDiffuse"),        at("uSpecular"),
+            at("uShininess"),      at("uAlpha"),
+            at("uViewer"),         at("uSpot"),
+            at("uSpotExponent"),   at("uAttenuation"),
+            at("uTextureModel"),   at("uSphereMap"),
+            at("uTexture"),        at("uBlendColor"),
+            at("uFogType"),        at("uFogColor"),
+            at("uFogVisibility"),  SurfaceScope::Locations::of(p)};
     p.use();
     glUniform1i(loc_.texture, 0);
 }
@@ -137,30 +130,16 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
     item.sphereMap = t.sphereMap;
     item.environment = look.environment;
 
+    item.scope.lightCount = 0;
     if (item.lit) {
-        if (look.lights.size() > std::size_t(kMaxLights))
-            throw Error(std::to_string(look.lights.size()) +
-                        " lights are in scope of a shape; at most " + std::to_string(kMaxLights) +
-                        " light a shape");
-        item.lightCount = int(look.lights.size());
+        item.scope.setLights(look.lights, "a shape", "a shape");
         for (std::size_t i = 0; i < look.lights.size(); ++i) {
             const SceneLight& l = look.lights[i];
-            item.lightVectors[i] = l.vector;
-            item.lightColors[i] = l.color;
             item.spots[i] = glm::vec4(l.spotDirection, l.spotCosCutOff);
             item.spotExponents[i] = l.spotExponent;
         }
-    } else {
-        item.lightCount = 0;
     }
-
-    if (look.clipPlanes.size() > std::size_t(maxClipPlanes_))
-        throw Error(std::to_string(look.clipPlanes.size()) +
-                    " ClipPlanes are in scope of a shape, but this OpenGL clips with at most " +
-                    std::to_string(maxClipPlanes_) + " (GL_MAX_CLIP_DISTANCES)");
-    item.clipPlaneCount = int(look.clipPlanes.size());
-    for (std::size_t i = 0; i < look.clipPlanes.size(); ++i)
-        item.clipPlanes[i] = glm::vec4(look.clipPlanes[i]);
+    item.scope.setClipPlanes(look.clipPlanes, maxClipPlanes_, "a shape");
 }
 
 void ShapeRenderer::setClipDistances(int count) {
@@ -190,12 +169,11 @@ void ShapeRenderer::draw(const DrawItem& item) {
     glUniform3fv(loc_.specular, 1, glm::value_ptr(item.specular));
     glUniform1f(loc_.shininess, item.shininess);
     glUniform1f(loc_.alpha, item.alpha);
-    glUniform1i(loc_.lightCount, item.lightCount);
-    if (item.lightCount > 0) {
-        glUniform4fv(loc_.lightVector, item.lightCount, glm::value_ptr(item.lightVectors[0]));
-        glUniform3fv(loc_.lightColor, item.lightCount, glm::value_ptr(item.lightColors[0]));
-        glUniform4fv(loc_.spot, item.lightCount, glm::value_ptr(item.spots[0]));
-        glUniform1fv(loc_.spotExponent, item.lightCount, item.spotExponents.data());
+    item.scope.upload(loc_.scope);
+    const int lights = item.scope.lightCount;
+    if (lights > 0) {
+        glUniform4fv(loc_.spot, lights, glm::value_ptr(item.spots[0]));
+        glUniform1fv(loc_.spotExponent, lights, item.spotExponents.data());
     }
     const ShapeEnvironment& env = item.environment;
     glUniform3fv(loc_.attenuation, 1, glm::value_ptr(env.attenuation));
@@ -218,10 +196,7 @@ void ShapeRenderer::draw(const DrawItem& item) {
         glUniform3fv(loc_.blendColor, 1, glm::value_ptr(item.blendColor));
         glUniformMatrix4fv(loc_.textureMatrix, 1, GL_FALSE, glm::value_ptr(item.textureMatrix));
     }
-    glUniform1i(loc_.clipPlaneCount, item.clipPlaneCount);
-    if (item.clipPlaneCount > 0)
-        glUniform4fv(loc_.clipPlanes, item.clipPlaneCount, glm::value_ptr(item.clipPlanes[0]));
-    setClipDistances(item.clipPlaneCount);
+    setClipDistances(item.scope.clipPlaneCount);
 
     // Draw style and culling are restored after the draw: the passes run with filled polygons,
     // one-pixel lines and no culling.

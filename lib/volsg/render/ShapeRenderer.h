@@ -13,6 +13,7 @@
 #include <volsg/gl/Program.h>
 #include <volsg/gl/Texture.h>
 #include <volsg/render/FrameContext.h>
+#include <volsg/render/ShaderPrelude.h>
 
 namespace volsg {
 
@@ -85,9 +86,9 @@ struct ShapeLook {
 /// viewer. Lines and points without normals are unlit: emissive + diffuse.
 class ShapeRenderer {
 public:
-    static constexpr int kMaxLights = 8;
+    static constexpr int kMaxLights = kMaxSurfaceLights;
     /// Clip planes are limited by GL_MAX_CLIP_DISTANCES (8 here), and by this.
-    static constexpr int kMaxClipPlanes = 16;
+    static constexpr int kMaxClipPlanes = kMaxSurfaceClipPlanes;
 
     ShapeRenderer(); ///< compiles the program; the context must be current
     ShapeRenderer(const ShapeRenderer&) = delete;
@@ -146,21 +147,18 @@ private:
         glm::mat4 textureMatrix{1.0f};
         bool sphereMap = false;
         ShapeEnvironment environment;
-        int lightCount = 0;
-        std::array<glm::vec4, kMaxLights> lightVectors{};
-        std::array<glm::vec3, kMaxLights> lightColors{};
+        SurfaceScope scope; ///< no lights when unlit
         std::array<glm::vec4, kMaxLights> spots{};
         std::array<float, kMaxLights> spotExponents{};
-        int clipPlaneCount = 0;
-        std::array<glm::vec4, kMaxClipPlanes> clipPlanes{};
         double eyeDepth = 0.0; ///< eye-space z of the bounds' centre (more negative = farther)
         std::function<void()> external; ///< set: a queueTransparent() draw, not a mesh
     };
     struct Locations {
-        GLint model, normalMatrix, viewProjection, view, textureMatrix, clipPlanes, clipPlaneCount,
-            lit, hasNormals, hasColors, emissive, ambient, diffuse, specular, shininess, alpha,
-            viewer, lightCount, lightVector, lightColor, spot, spotExponent, attenuation,
-            textureModel, sphereMap, texture, blendColor, fogType, fogColor, fogVisibility;
+        GLint model, normalMatrix, viewProjection, view, textureMatrix, lit, hasNormals, hasColors,
+            emissive, ambient, diffuse, specular, shininess, alpha, viewer, spot, spotExponent,
+            attenuation, textureModel, sphereMap, texture, blendColor, fogType, fogColor,
+            fogVisibility;
+        SurfaceScope::Locations scope;
     };
 
     void fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& item);

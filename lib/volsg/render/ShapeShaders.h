@@ -1,49 +1,28 @@
 #pragma once
 // GLSL of the shape program: Inventor's fixed-function Phong model, per fragment, with its
 // texture models, spot lights, environment (ambient light, attenuation, fog).
-// Compiled with "#version 330 core" and the MAX_LIGHTS / MAX_CLIP_PLANES defines in front.
+// Each stage follows the prelude and the shared surface code (SurfaceShaders.h).
 
 namespace volsg::shaders {
 
 inline constexpr const char* shapeVertex = R"GLSL(
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec4 aColor;
-layout(location = 3) in vec2 aTexCoord;
 
-uniform mat4 uModel;
-uniform mat3 uNormalMatrix;
-uniform mat4 uViewProjection;
 uniform mat4 uView;
 uniform mat4 uTextureMatrix;
-uniform vec4 uClipPlanes[MAX_CLIP_PLANES]; // world (n, d): keep dot(n, p) >= d
-uniform int uClipPlaneCount;
 
-out vec3 vWorldPosition;
-out vec3 vWorldNormal;
-out vec4 vColor;
 out vec2 vTexCoord;
 out float vEyeDistance;
-out float gl_ClipDistance[MAX_CLIP_PLANES];
 
 void main() {
-    vec4 world = uModel * vec4(aPosition, 1.0);
-    vWorldPosition = world.xyz;
-    vWorldNormal = uNormalMatrix * aNormal;
+    vec4 world = transformVertex();
     vColor = aColor;
-    vTexCoord = (uTextureMatrix * vec4(aTexCoord, 0.0, 1.0)).xy;
+    vTexCoord = (uTextureMatrix * vec4(aTexCoord0, 0.0, 1.0)).xy;
     vEyeDistance = -(uView * world).z;
-    for (int i = 0; i < MAX_CLIP_PLANES; ++i)
-        gl_ClipDistance[i] =
-            i < uClipPlaneCount ? dot(uClipPlanes[i].xyz, world.xyz) - uClipPlanes[i].w : 1.0;
-    gl_Position = uViewProjection * world;
 }
 )GLSL";
 
 inline constexpr const char* shapeFragment = R"GLSL(
-in vec3 vWorldPosition;
-in vec3 vWorldNormal;
-in vec4 vColor;
 in vec2 vTexCoord;
 in float vEyeDistance;
 
@@ -56,11 +35,7 @@ uniform vec3 uDiffuse;
 uniform vec3 uSpecular;
 uniform float uShininess; // the exponent: Inventor's shininess * 128
 uniform float uAlpha;     // 1 - transparency
-uniform vec4 uViewer;     // eye position (w = 1) or direction towards the viewer (w = 0)
 uniform mat4 uView;
-uniform int uLightCount;
-uniform vec4 uLightVector[MAX_LIGHTS]; // position (w = 1) or direction towards the light (w = 0)
-uniform vec3 uLightColor[MAX_LIGHTS];  // intensity * colour
 uniform vec4 uSpot[MAX_LIGHTS];        // direction the spot points (xyz), cos of cut-off (w)
 uniform float uSpotExponent[MAX_LIGHTS];
 uniform vec3 uAttenuation;             // squared, linear, constant (SoEnvironment)
@@ -107,7 +82,7 @@ vec3 fogged(vec3 color) {
 void main() {
     vec3 diffuse = uHasColors ? vColor.rgb : uDiffuse;
     float alpha = uAlpha * (uHasColors ? vColor.a : 1.0);
-    vec3 V = normalize(uViewer.xyz - vWorldPosition * uViewer.w);
+    vec3 V = towardsViewer();
     vec3 N = uHasNormals ? vWorldNormal : vec3(0.0);
     if (dot(N, N) <= 0.0) N = cross(dFdx(vWorldPosition), dFdy(vWorldPosition));
     N = dot(N, N) > 0.0 ? normalize(N) : V;
@@ -122,7 +97,7 @@ void main() {
 
     vec3 color = uEmissive + uAmbient;
     for (int i = 0; i < uLightCount; ++i) {
-        vec3 toLight = uLightVector[i].xyz - vWorldPosition * uLightVector[i].w;
+        vec3 toLight = lightVector(i);
         vec3 L = normalize(toLight);
         float NdotL = dot(N, L);
         if (NdotL <= 0.0) continue; // no diffuse and, as in OpenGL, no specular
