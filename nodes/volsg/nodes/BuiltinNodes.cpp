@@ -28,9 +28,14 @@
 #include <volsg/nodes/Material.h>
 #include <volsg/nodes/MatrixTransform.h>
 #include <volsg/nodes/Normal.h>
+#include <volsg/nodes/NurbsCurve.h>
+#include <volsg/nodes/NurbsSurface.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
 #include <volsg/nodes/PointSet.h>
+#include <volsg/nodes/Profile.h>
+#include <volsg/nodes/ProfileCoordinate2.h>
+#include <volsg/nodes/ProfileCoordinate3.h>
 #include <volsg/nodes/QuadMesh.h>
 #include <volsg/nodes/ResetTransform.h>
 #include <volsg/nodes/Separator.h>
@@ -113,6 +118,15 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(QuadMesh::classType());
     r.add(LineSet::classType());
     r.add(PointSet::classType());
+    // Inventor 2.1: NURBS and profiles.
+    r.add(ProfileCoordinate2::classType());
+    r.add(ProfileCoordinate3::classType());
+    r.add(LinearProfile::classType());
+    r.add(NurbsProfile::classType());
+    r.add(NurbsCurve::classType());
+    r.add(IndexedNurbsCurve::classType());
+    r.add(NurbsSurface::classType());
+    r.add(IndexedNurbsSurface::classType());
 }
 
 } // namespace
