@@ -3,6 +3,7 @@
 
 #include <mutex>
 
+#include <volsg/nodes/AsciiText.h>
 #include <volsg/nodes/BaseColor.h>
 #include <volsg/nodes/Bindings.h>
 #include <volsg/nodes/BoxClip.h>
@@ -17,6 +18,7 @@
 #include <volsg/nodes/DrawStyle.h>
 #include <volsg/nodes/Environment.h>
 #include <volsg/nodes/FaceSet.h>
+#include <volsg/nodes/Font.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/Group.h>
 #include <volsg/nodes/IndexedFaceSet.h>
@@ -43,6 +45,8 @@
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Switch.h>
+#include <volsg/nodes/Text2.h>
+#include <volsg/nodes/Text3.h>
 #include <volsg/nodes/Texture2.h>
 #include <volsg/nodes/Texture2Transform.h>
 #include <volsg/nodes/TextureCoordinate2.h>
@@ -118,7 +122,11 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(QuadMesh::classType());
     r.add(LineSet::classType());
     r.add(PointSet::classType());
-    // Inventor 2.1: NURBS and profiles.
+    // Inventor 2.1: text and NURBS.
+    r.add(Font::classType());
+    r.add(Text2::classType());
+    r.add(Text3::classType());
+    r.add(AsciiText::classType());
     r.add(ProfileCoordinate2::classType());
     r.add(ProfileCoordinate3::classType());
     r.add(LinearProfile::classType());
