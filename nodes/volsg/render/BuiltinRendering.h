@@ -11,6 +11,7 @@ void addVolumeRenderMethods(ActionMethods& methods);
 void addShearWarpRenderMethods(ActionMethods& methods);
 void addSliceRenderMethods(ActionMethods& methods);
 void addGltfRenderMethods(ActionMethods& methods);
+void addTextRenderMethods(ActionMethods& methods);
 
 inline void addBuiltinRenderMethods(ActionMethods& methods) {
     addShapeRenderMethods(methods);
@@ -18,6 +19,7 @@ inline void addBuiltinRenderMethods(ActionMethods& methods) {
     addShearWarpRenderMethods(methods);
     addSliceRenderMethods(methods);
     addGltfRenderMethods(methods);
+    addTextRenderMethods(methods);
 }
 
 } // namespace volsg
