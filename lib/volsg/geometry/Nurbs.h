@@ -8,6 +8,12 @@
 // each loop, so a counter-clockwise loop keeps its inside and a clockwise loop inside it cuts
 // a hole; without trim loops the whole domain is kept). No scene graph: the node types gather
 // control points and loops from the state (nodes/volsg/nodes/NurbsShapes.cpp).
+//
+// Why not GLU's own NURBS tessellator (gluNurbsSurface in GLU_NURBS_TESSELLATOR mode, as Coin
+// uses it): Mesa's GLU still calls glPushAttrib and glPopAttrib around every surface in that
+// mode, which are errors in the 3.3 core contexts volsg draws with, and reach whatever
+// context is current through libOpenGL while a mesh is built during a render. The sampling
+// and the trimming rule here are GLU's; only its polygon tessellator is used (no GL calls).
 
 #include <cstddef>
 #include <cstdint>
