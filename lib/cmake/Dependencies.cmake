@@ -12,6 +12,11 @@ pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 # Texture image files: libsimage is the loader Coin itself uses, so a Texture2 reads exactly
 # the formats an Inventor file may name (SGI .rgb, PNG, JPEG, GIF, TIFF).
 pkg_check_modules(SIMAGE REQUIRED IMPORTED_TARGET simage)
+# Text: FreeType gives the glyph outlines (Text3, AsciiText) and bitmaps (Text2) of the DejaVu
+# faces (fonts-dejavu-core, found at run time). GLU's polygon tessellator triangulates glyph
+# outlines and trimmed NURBS cells (pure computation: no GL context, no GL call).
+find_package(Freetype REQUIRED)
+pkg_check_modules(GLU REQUIRED IMPORTED_TARGET glu)
 # Dear ImGui for the viewer's editor panels: Debian ships a static libimgui.a with the GLFW and
 # OpenGL3 backends compiled in and no CMake config.
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)

@@ -475,7 +475,9 @@ TEST_CASE("200 random graphs round-trip to equal graphs") {
     MESSAGE("round-tripped 200 random graphs: " << nodes << " written nodes, " << uses << " USEs, "
                                                 << suffixed
                                                 << " clashing names written with a suffix");
-    CHECK(nodes > 1500);
+    // Graphs shrink as leaf types join the registry (groups are picked less often): 1358 nodes
+    // with the text and NURBS types.
+    CHECK(nodes > 1000);
     CHECK(uses > 100);
     CHECK(suffixed > 0);
 }

@@ -8,6 +8,7 @@
 #include <volsg/nodes/Separator.h>
 #include <volsg/nodes/Shape.h>
 #include <volsg/nodes/ShearWarpVolume.h>
+#include <volsg/nodes/Text2.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/volumescene/VolumeInScope.h>
@@ -52,6 +53,18 @@ void boundGltfModel(BoundingBoxAction& action, GltfModel& model) {
     action.extendByLocal(model.asset().bounds);
 }
 
+/// Text2's extent is in pixels: without a view (this action has no camera or viewport) its
+/// box is its origin, the point Coin's SoText2::computeBBox builds its screen quad around.
+void boundText2(BoundingBoxAction& action, Text2& text) {
+    for (const std::string& s : text.string.getValues())
+        if (!s.empty()) {
+            Box3 origin;
+            origin.extendBy(glm::dvec3(0.0));
+            action.extendByLocal(origin);
+            return;
+        }
+}
+
 void boundResetTransform(BoundingBoxAction& action, ResetTransform& node) {
     if (node.whatToReset() & ResetTransform::BBOX) action.emptyBoxInScope();
     node.doAction(action);
@@ -77,6 +90,7 @@ ActionMethods& BoundingBoxAction::methods() {
         t->add(&boundGltfModel);
         t->add(&boundResetTransform);
         t->add(&boundFile);
+        t->add(&boundText2);
         return t;
     }();
     return *table;

@@ -18,8 +18,11 @@
 #include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/Shape.h>
 #include <volsg/render/InventorRendering.h>
+#include <volsg/nodes/Text2.h>
+#include <volsg/nodes/TextFont.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/sections/SliceSampler.h>
+#include <volsg/text/ScreenTextRenderer.h>
 #include <volsg/volumescene/VolumeInScope.h>
 
 namespace volsg {
@@ -92,6 +95,47 @@ void pickShape(PickAction& action, Shape& shape) {
         const glm::dvec3 point = (1.0 - hit->u - hit->v) * a + hit->u * b + hit->v * c;
         action.addLocalHit(point, glm::normalize(normal), i);
     }
+}
+
+/// Text2 is hit where the ray, at the depth of the text's origin, falls in the screen rectangle
+/// of its glyphs (Coin's SoText2::rayPick: the quad around the string in the plane through the
+/// origin facing the camera). Only pixel picks know the view; the normal faces the camera.
+void pickText2(PickAction& action, Text2& text) {
+    const auto& view = action.pixelView();
+    if (!view) return;
+    std::shared_ptr<FontFace> face;
+    const ScreenText layout = screenTextInScope(text, action.state(), face);
+    if (layout.glyphs.empty() || layout.boxMin == layout.boxMax) return;
+    const glm::dmat4& model = action.state().modelMatrix();
+    const double det = glm::determinant(model);
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return;
+    const glm::dvec3 anchor(model * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    const glm::dmat4 viewProjection = view->projection * view->view;
+    const ScreenTextPlacement place =
+        placeScreenText(viewProjection, view->width, view->height, anchor, layout.anchorShift);
+    if (!place.visible) return;
+    // Where the ray meets the plane through the origin parallel to the screen.
+    const Ray& ray = action.worldRay();
+    const glm::dvec3 eyeOrigin(view->view * glm::dvec4(ray.origin, 1.0));
+    const glm::dvec3 eyeDirection(view->view * glm::dvec4(ray.direction, 0.0));
+    const double eyeDepth = (view->view * glm::dvec4(anchor, 1.0)).z;
+    if (eyeDirection.z == 0.0) return;
+    const double t = (eyeDepth - eyeOrigin.z) / eyeDirection.z;
+    if (!(t >= 0.0)) return;
+    const glm::dvec3 hit = ray.origin + t * ray.direction;
+    const glm::dvec4 clip = viewProjection * glm::dvec4(hit, 1.0);
+    if (!(clip.w > 0.0)) return;
+    const glm::dvec2 window((clip.x / clip.w + 1.0) * 0.5 * view->width,
+                            (clip.y / clip.w + 1.0) * 0.5 * view->height);
+    const glm::dvec2 lo = glm::dvec2(place.origin + layout.boxMin);
+    const glm::dvec2 hi = glm::dvec2(place.origin + layout.boxMax);
+    if (window.x < lo.x || window.x > hi.x || window.y < lo.y || window.y > hi.y) return;
+    const glm::dvec3 towardsCamera =
+        glm::dvec3(glm::inverse(view->view) * glm::dvec4(0.0, 0.0, 1.0, 0.0));
+    const glm::dvec3 localPoint(glm::inverse(model) * glm::dvec4(hit, 1.0));
+    // addLocalHit maps normals by the inverse transpose; this is the world normal mapped back.
+    const glm::dvec3 localNormal = glm::transpose(glm::dmat3(model)) * towardsCamera;
+    action.addLocalHit(localPoint, localNormal, 0);
 }
 
 /// Hits the slice where the ray crosses its polygon inside the volume box and the slice is
@@ -292,6 +336,7 @@ void PickAction::setRay(const Ray& worldRay, double nearDistance, double farDist
 
 void PickAction::beginTraversal(Node& root) {
     picked_.reset();
+    pixelView_.reset();
     if (hasPixel_) {
         rayValid_ = false;
         if (width_ <= 0 || height_ <= 0) return;
@@ -304,10 +349,11 @@ void PickAction::beginTraversal(Node& root) {
             cameraModel = scene.model;
         }
         if (!camera) return;
-        const PixelRay pr =
-            rayThroughPixel(camera->viewMatrix(cameraModel), camera->projectionMatrix(aspect), px_,
-                            py_, width_, height_);
+        const glm::dmat4 view = camera->viewMatrix(cameraModel);
+        const glm::dmat4 projection = camera->projectionMatrix(aspect);
+        const PixelRay pr = rayThroughPixel(view, projection, px_, py_, width_, height_);
         if (!pr.valid) return;
+        pixelView_ = PixelView{view, projection, width_, height_};
         worldRay_ = pr.ray;
         near_ = pr.nearDistance;
         far_ = pr.farDistance;
@@ -341,6 +387,7 @@ ActionMethods& PickAction::methods() {
         t->add(&pickLOD);
         t->add(&pickLevelOfDetail);
         t->add(&pickFile);
+        t->add(&pickText2);
         return t;
     }();
     return *table;

@@ -69,6 +69,15 @@ public:
 
     const std::optional<PickedPoint>& picked() const { return picked_; }
 
+    /// For a pixel pick, once apply() has begun: the view the ray was cast in (the camera's
+    /// view and projection, the viewport's size). Screen-space shapes (Text2) test their
+    /// screen rectangle in it, as Coin's SoRayPickAction gives them its view volume.
+    struct PixelView {
+        glm::dmat4 view{1.0}, projection{1.0};
+        int width = 1, height = 1;
+    };
+    const std::optional<PixelView>& pixelView() const { return pixelView_; }
+
 protected:
     void beginTraversal(Node& root) override;
     void dispatch(Node& node) override;
@@ -84,6 +93,7 @@ private:
     double far_ = std::numeric_limits<double>::infinity();
     bool rayValid_ = true;
     std::optional<PickedPoint> picked_;
+    std::optional<PixelView> pixelView_;
 };
 
 } // namespace volsg

@@ -3,6 +3,7 @@
 
 #include <mutex>
 
+#include <volsg/nodes/AsciiText.h>
 #include <volsg/nodes/BaseColor.h>
 #include <volsg/nodes/Bindings.h>
 #include <volsg/nodes/Annotation.h>
@@ -23,6 +24,7 @@
 #include <volsg/nodes/Environment.h>
 #include <volsg/nodes/FaceSet.h>
 #include <volsg/nodes/File.h>
+#include <volsg/nodes/Font.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/Group.h>
 #include <volsg/nodes/IndexedFaceSet.h>
@@ -41,9 +43,14 @@
 #include <volsg/nodes/MultipleCopy.h>
 #include <volsg/nodes/NodeKitListPart.h>
 #include <volsg/nodes/Normal.h>
+#include <volsg/nodes/NurbsCurve.h>
+#include <volsg/nodes/NurbsSurface.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
 #include <volsg/nodes/PointSet.h>
+#include <volsg/nodes/Profile.h>
+#include <volsg/nodes/ProfileCoordinate2.h>
+#include <volsg/nodes/ProfileCoordinate3.h>
 #include <volsg/nodes/QuadMesh.h>
 #include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/ResetTransform.h>
@@ -59,6 +66,8 @@
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Switch.h>
+#include <volsg/nodes/Text2.h>
+#include <volsg/nodes/Text3.h>
 #include <volsg/nodes/Texture2.h>
 #include <volsg/nodes/Texture2Transform.h>
 #include <volsg/nodes/TextureCoordinate2.h>
@@ -163,6 +172,19 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(LightKit::classType());
     r.add(CameraKit::classType());
     r.add(SceneKit::classType());
+    // Inventor 2.1: text and NURBS.
+    r.add(Font::classType());
+    r.add(Text2::classType());
+    r.add(Text3::classType());
+    r.add(AsciiText::classType());
+    r.add(ProfileCoordinate2::classType());
+    r.add(ProfileCoordinate3::classType());
+    r.add(LinearProfile::classType());
+    r.add(NurbsProfile::classType());
+    r.add(NurbsCurve::classType());
+    r.add(IndexedNurbsCurve::classType());
+    r.add(NurbsSurface::classType());
+    r.add(IndexedNurbsSurface::classType());
 }
 
 } // namespace

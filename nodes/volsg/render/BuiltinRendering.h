@@ -12,6 +12,7 @@ void addShearWarpRenderMethods(ActionMethods& methods);
 void addSliceRenderMethods(ActionMethods& methods);
 void addGltfRenderMethods(ActionMethods& methods);
 void addInventorRenderMethods(ActionMethods& methods);
+void addTextRenderMethods(ActionMethods& methods);
 
 inline void addBuiltinRenderMethods(ActionMethods& methods) {
     addShapeRenderMethods(methods);
@@ -20,6 +21,7 @@ inline void addBuiltinRenderMethods(ActionMethods& methods) {
     addSliceRenderMethods(methods);
     addGltfRenderMethods(methods);
     addInventorRenderMethods(methods);
+    addTextRenderMethods(methods);
 }
 
 } // namespace volsg
