@@ -77,8 +77,11 @@ cube = bnode("Cube", bstr("width") + f32(2.0) + u32(0), 1)
 case("scene-binary-truncated.iv", BH + bnode("Separator", children=[cube])[:-6],
      "unexpected end of file")
 case("scene-binary-huge-count.iv",
-     BH + bnode("Coordinate3", bstr("point") + u32(0x7FFFFFFF) + f32(1) * 6 + u32(0), 1),
-     "byte 60: MFVec3f: 2147483647 values of at least 12 bytes each do not fit in the 28 bytes left")
+     BH + bnode("Coordinate3", bstr("point") + u32(0xFFFFFF) + f32(1) * 6 + u32(0), 1),
+     "byte 60: field 'point' of Coordinate3 expects MFVec3f: the list: 16777215 values of at least 12 bytes each do not fit in the 28 bytes left")
+case("scene-binary-count-past-limit.iv",
+     BH + bnode("Coordinate3", bstr("point") + u32(0x7FFFFFFF) + u32(0), 1),
+     "more than 16777216 values in one MFVec3f field")
 case("scene-binary-negative-count.iv",
      BH + bnode("Coordinate3", bstr("point") + u32(0xFFFFFFFF) + u32(0), 1),
      "negative value count -1")
@@ -95,7 +98,7 @@ for i in range(1001):
     deep = bnode("Separator", children=[deep] if deep else [])
 case("scene-binary-deep-nesting.iv", BH + deep, "nodes nested deeper than 1000 levels")
 case("scene-binary-unknown-type.iv", BH + bnode("Teapot"),
-     "unknown node type 'Teapot' without a description of its fields")
+     "byte 24: unknown node type 'Teapot' without a description of its fields")
 case("scene-binary-unknown-field.iv", BH + bnode("Cube", bstr("colour") + f32(1) + u32(0), 1),
      "unknown field 'colour' in Cube")
 case("scene-binary-nan.iv", BH + bnode("Cube", bstr("width") + u32(0x7FC00000) + u32(0), 1),

@@ -580,7 +580,7 @@ template <class Traits> void MField<Traits>::read(FieldInput& in) {
         if (std::size_t(count) > limits::maxFieldValues)
             binary->failAt(at, "more than " + std::to_string(limits::maxFieldValues) +
                                    " values in one " + Traits::mfName + " field");
-        binary->requireItems(std::uint64_t(count), Traits::binarySize, Traits::mfName, at);
+        binary->requireItems(std::uint64_t(count), Traits::binarySize, "the list", at);
         values.reserve(std::size_t(count));
         for (std::int32_t i = 0; i < count; ++i)
             values.push_back(Traits::readBinary(*binary));
@@ -858,7 +858,7 @@ void MFNode::read(FieldInput& in) {
             binary->failAt(at, "more than " + std::to_string(limits::maxFieldValues) +
                                    " values in one MFNode field");
         // A node takes at least its type name: 4 bytes of length and 4 of text.
-        binary->requireItems(std::uint64_t(count), 8, "MFNode", at);
+        binary->requireItems(std::uint64_t(count), 8, "the list", at);
         for (std::int32_t i = 0; i < count; ++i)
             values.push_back(in.readNode());
         setValues(std::move(values));
@@ -1152,6 +1152,24 @@ using AllValueTraits =
 }
 
 } // namespace
+
+bool valuesClose(const Field& a, const Field& b, double relativeTolerance) {
+    if (std::string_view(a.typeName()) != b.typeName()) return false;
+    if (a.equals(b)) return true;
+    std::vector<Element> ea, eb;
+    if (!AllValueTraits::elements(a, ea) || !AllValueTraits::elements(b, eb)) return false;
+    if (ea.size() != eb.size()) return false;
+    for (std::size_t i = 0; i < ea.size(); ++i) {
+        if (ea[i].isText != eb[i].isText || ea[i].text != eb[i].text) return false;
+        if (ea[i].numbers.size() != eb[i].numbers.size()) return false;
+        for (std::size_t k = 0; k < ea[i].numbers.size(); ++k) {
+            const double x = ea[i].numbers[k], y = eb[i].numbers[k];
+            const double scale = std::max({1.0, std::abs(x), std::abs(y)});
+            if (std::abs(x - y) > relativeTolerance * scale) return false;
+        }
+    }
+    return true;
+}
 
 bool assignConverted(Field& to, const Field& from) {
     if (std::string_view(to.typeName()) == from.typeName() && typeid(to) == typeid(from)) {

@@ -330,6 +330,11 @@ bool keepOnlyValue(Field& list, std::size_t i);
 /// Appends the values of `from`, a list field of the same type, to `to`.
 void appendValues(Field& to, const Field& from);
 
+/// Whether two fields of the same type hold the same values, numbers allowed to differ by
+/// `relativeTolerance` of their magnitude (at least of 1): text written with 8 significant
+/// digits, as Coin writes floats, reads back within 1e-7 of the float it came from.
+bool valuesClose(const Field& a, const Field& b, double relativeTolerance);
+
 /// A new field of the same type and value as `from`, without owner (a snapshot).
 std::unique_ptr<Field> cloneField(const Field& from);
 

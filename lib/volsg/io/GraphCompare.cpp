@@ -41,7 +41,7 @@ std::string typeNameOf(const Node& node) {
 
 class GraphComparer {
 public:
-    explicit GraphComparer(std::string* why) : why_(why) {}
+    GraphComparer(std::string* why, double tolerance) : why_(why), tolerance_(tolerance) {}
 
     bool compare(const Node* a, const Node* b, const std::string& where) {
         if (!a || !b)
@@ -125,7 +125,7 @@ private:
         // A field that is default on both sides is not written; its value does not count (a
         // binary file may carry a value and flag it default).
         if (fa->isDefault()) return true;
-        if (!fa->equals(*fb))
+        if (!fa->equals(*fb) && !(tolerance_ > 0.0 && valuesClose(*fa, *fb, tolerance_)))
             return fail(where, "value " + ValueText::of(*fa) + " vs " + ValueText::of(*fb));
         return true;
     }
@@ -136,13 +136,14 @@ private:
     }
 
     std::string* why_;
+    double tolerance_;
     std::unordered_map<const Node*, const Node*> aToB_, bToA_;
 };
 
 } // namespace
 
-bool graphsEqual(const Node& a, const Node& b, std::string* why) {
-    GraphComparer comparer(why);
+bool graphsEqual(const Node& a, const Node& b, std::string* why, double relativeTolerance) {
+    GraphComparer comparer(why, relativeTolerance);
     return comparer.compare(&a, &b, "");
 }
 

@@ -28,6 +28,7 @@ namespace volsg {
 class Calculator : public Inherit<Engine, Calculator> {
 public:
     static constexpr const char* typeName = "Calculator";
+    static constexpr bool inventorBuiltin() { return true; }
     MFFloat a{this, "a", {0.0f}}, b{this, "b", {0.0f}}, c{this, "c", {0.0f}}, d{this, "d", {0.0f}},
         e{this, "e", {0.0f}}, f{this, "f", {0.0f}}, g{this, "g", {0.0f}}, h{this, "h", {0.0f}};
     MFVec3f A{this, "A", {glm::vec3(0.0f)}}, B{this, "B", {glm::vec3(0.0f)}},

@@ -20,6 +20,7 @@ namespace volsg {
 class ElapsedTime : public Inherit<Engine, ElapsedTime> {
 public:
     static constexpr const char* typeName = "ElapsedTime";
+    static constexpr bool inventorBuiltin() { return true; }
     SFTime timeIn{this, "timeIn"};
     SFFloat speed{this, "speed", 1.0f};
     SFBool on{this, "on", true};
@@ -44,6 +45,7 @@ private:
 class TimeCounter : public Inherit<Engine, TimeCounter> {
 public:
     static constexpr const char* typeName = "TimeCounter";
+    static constexpr bool inventorBuiltin() { return true; }
     SFTime timeIn{this, "timeIn"};
     SFShort min{this, "min", 0};
     SFShort max{this, "max", 1};
@@ -76,6 +78,7 @@ private:
 class Counter : public Inherit<Engine, Counter> {
 public:
     static constexpr const char* typeName = "Counter";
+    static constexpr bool inventorBuiltin() { return true; }
     SFShort min{this, "min", 0};
     SFShort max{this, "max", 1};
     SFShort step{this, "step", 1};
@@ -102,6 +105,7 @@ private:
 class OneShot : public Inherit<Engine, OneShot> {
 public:
     static constexpr const char* typeName = "OneShot";
+    static constexpr bool inventorBuiltin() { return true; }
     enum Flags { RETRIGGERABLE = 1, HOLD_FINAL = 2 };
     static const EnumValues flagNames;
     SFTime timeIn{this, "timeIn"};
@@ -127,6 +131,7 @@ private:
 class OnOff : public Inherit<Engine, OnOff> {
 public:
     static constexpr const char* typeName = "OnOff";
+    static constexpr bool inventorBuiltin() { return true; }
     SFTrigger on{this, "on"};
     SFTrigger off{this, "off"};
     SFTrigger toggle{this, "toggle"};
@@ -147,6 +152,7 @@ private:
 class TriggerAny : public Inherit<Engine, TriggerAny> {
 public:
     static constexpr const char* typeName = "TriggerAny";
+    static constexpr bool inventorBuiltin() { return true; }
     SFTrigger input0{this, "input0"}, input1{this, "input1"}, input2{this, "input2"},
         input3{this, "input3"}, input4{this, "input4"}, input5{this, "input5"},
         input6{this, "input6"}, input7{this, "input7"}, input8{this, "input8"},
@@ -166,6 +172,7 @@ private:
 class BoolOperation : public Inherit<Engine, BoolOperation> {
 public:
     static constexpr const char* typeName = "BoolOperation";
+    static constexpr bool inventorBuiltin() { return true; }
     MFBool a{this, "a", {false}};
     MFBool b{this, "b", {false}};
     MFEnumWord operation{this, "operation", {"A"}};
@@ -183,6 +190,7 @@ protected:
 class ComposeVec2f : public Inherit<Engine, ComposeVec2f> {
 public:
     static constexpr const char* typeName = "ComposeVec2f";
+    static constexpr bool inventorBuiltin() { return true; }
     MFFloat x{this, "x", {0.0f}}, y{this, "y", {0.0f}};
     void evaluate(const EngineContext& context) override;
 
@@ -193,6 +201,7 @@ protected:
 class ComposeVec3f : public Inherit<Engine, ComposeVec3f> {
 public:
     static constexpr const char* typeName = "ComposeVec3f";
+    static constexpr bool inventorBuiltin() { return true; }
     MFFloat x{this, "x", {0.0f}}, y{this, "y", {0.0f}}, z{this, "z", {0.0f}};
     void evaluate(const EngineContext& context) override;
 
@@ -203,6 +212,7 @@ protected:
 class ComposeVec4f : public Inherit<Engine, ComposeVec4f> {
 public:
     static constexpr const char* typeName = "ComposeVec4f";
+    static constexpr bool inventorBuiltin() { return true; }
     MFFloat x{this, "x", {0.0f}}, y{this, "y", {0.0f}}, z{this, "z", {0.0f}}, w{this, "w", {0.0f}};
     void evaluate(const EngineContext& context) override;
 
@@ -213,6 +223,7 @@ protected:
 class DecomposeVec2f : public Inherit<Engine, DecomposeVec2f> {
 public:
     static constexpr const char* typeName = "DecomposeVec2f";
+    static constexpr bool inventorBuiltin() { return true; }
     MFVec2f vector{this, "vector", {glm::vec2(0.0f)}};
     void evaluate(const EngineContext& context) override;
 
@@ -225,6 +236,7 @@ protected:
 class DecomposeVec3f : public Inherit<Engine, DecomposeVec3f> {
 public:
     static constexpr const char* typeName = "DecomposeVec3f";
+    static constexpr bool inventorBuiltin() { return true; }
     MFVec3f vector{this, "vector", {glm::vec3(0.0f)}};
     void evaluate(const EngineContext& context) override;
 
@@ -237,6 +249,7 @@ protected:
 class DecomposeVec4f : public Inherit<Engine, DecomposeVec4f> {
 public:
     static constexpr const char* typeName = "DecomposeVec4f";
+    static constexpr bool inventorBuiltin() { return true; }
     MFVec4f vector{this, "vector", {glm::vec4(0.0f)}};
     void evaluate(const EngineContext& context) override;
 
@@ -249,6 +262,7 @@ protected:
 class ComposeRotation : public Inherit<Engine, ComposeRotation> {
 public:
     static constexpr const char* typeName = "ComposeRotation";
+    static constexpr bool inventorBuiltin() { return true; }
     MFVec3f axis{this, "axis", {glm::vec3(0.0f, 0.0f, 1.0f)}};
     MFFloat angle{this, "angle", {0.0f}};
     void evaluate(const EngineContext& context) override;
@@ -260,6 +274,7 @@ protected:
 class ComposeRotationFromTo : public Inherit<Engine, ComposeRotationFromTo> {
 public:
     static constexpr const char* typeName = "ComposeRotationFromTo";
+    static constexpr bool inventorBuiltin() { return true; }
     MFVec3f from{this, "from", {glm::vec3(0.0f, 0.0f, 1.0f)}};
     MFVec3f to{this, "to", {glm::vec3(0.0f, 0.0f, 1.0f)}};
     void evaluate(const EngineContext& context) override;
@@ -271,6 +286,7 @@ protected:
 class DecomposeRotation : public Inherit<Engine, DecomposeRotation> {
 public:
     static constexpr const char* typeName = "DecomposeRotation";
+    static constexpr bool inventorBuiltin() { return true; }
     MFRotation rotation{this, "rotation", {Rotation{}}};
     void evaluate(const EngineContext& context) override;
 
@@ -283,6 +299,7 @@ protected:
 class ComposeMatrix : public Inherit<Engine, ComposeMatrix> {
 public:
     static constexpr const char* typeName = "ComposeMatrix";
+    static constexpr bool inventorBuiltin() { return true; }
     MFVec3f translation{this, "translation", {glm::vec3(0.0f)}};
     MFRotation rotation{this, "rotation", {Rotation{}}};
     MFVec3f scaleFactor{this, "scaleFactor", {glm::vec3(1.0f)}};
@@ -299,6 +316,7 @@ protected:
 class DecomposeMatrix : public Inherit<Engine, DecomposeMatrix> {
 public:
     static constexpr const char* typeName = "DecomposeMatrix";
+    static constexpr bool inventorBuiltin() { return true; }
     MFMatrix matrix{this, "matrix", {glm::mat4(1.0f)}};
     MFVec3f center{this, "center", {glm::vec3(0.0f)}};
     void evaluate(const EngineContext& context) override;
@@ -317,6 +335,7 @@ protected:
 class TransformVec3f : public Inherit<Engine, TransformVec3f> {
 public:
     static constexpr const char* typeName = "TransformVec3f";
+    static constexpr bool inventorBuiltin() { return true; }
     MFVec3f vector{this, "vector", {glm::vec3(0.0f)}};
     MFMatrix matrix{this, "matrix", {glm::mat4(1.0f)}};
     void evaluate(const EngineContext& context) override;
@@ -333,6 +352,7 @@ template <class MFType, const char* Name, const char* OutType>
 class Interpolate : public Inherit<Engine, Interpolate<MFType, Name, OutType>> {
 public:
     static constexpr const char* typeName = Name;
+    static constexpr bool inventorBuiltin() { return true; }
     SFFloat alpha{this, "alpha", 0.0f};
     MFType input0{this, "input0"};
     MFType input1{this, "input1"};
@@ -364,6 +384,7 @@ using InterpolateRotation = Interpolate<MFRotation, interpolateRotationName, mfR
 class TypedEngine : public Inherit<Engine, TypedEngine> {
 public:
     static constexpr const char* typeName = "TypedEngine";
+    static constexpr bool inventorBuiltin() { return true; }
     SFName type{this, "type"};
 
     std::size_t fieldCount() const override;
@@ -390,6 +411,7 @@ private:
 class SelectOne : public Inherit<TypedEngine, SelectOne> {
 public:
     static constexpr const char* typeName = "SelectOne";
+    static constexpr bool inventorBuiltin() { return true; }
     SFInt32 index{this, "index", 0};
     void evaluate(const EngineContext& context) override;
 
@@ -405,6 +427,7 @@ protected:
 class Gate : public Inherit<TypedEngine, Gate> {
 public:
     static constexpr const char* typeName = "Gate";
+    static constexpr bool inventorBuiltin() { return true; }
     SFBool enable{this, "enable", false};
     SFTrigger trigger{this, "trigger"};
     void evaluate(const EngineContext& context) override;
@@ -422,6 +445,7 @@ private:
 class Concatenate : public Inherit<TypedEngine, Concatenate> {
 public:
     static constexpr const char* typeName = "Concatenate";
+    static constexpr bool inventorBuiltin() { return true; }
     void evaluate(const EngineContext& context) override;
 
 protected:

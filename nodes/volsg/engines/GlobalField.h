@@ -15,6 +15,7 @@ namespace volsg {
 class GlobalField : public Inherit<Engine, GlobalField> {
 public:
     static constexpr const char* typeName = "GlobalField";
+    static constexpr bool inventorBuiltin() { return true; }
 
     SFName type{this, "type"};
 

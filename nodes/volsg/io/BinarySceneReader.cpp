@@ -20,6 +20,7 @@
 #include <volsg/nodes/Separator.h>
 
 #include <cstdio>
+#include <optional>
 
 namespace volsg {
 
@@ -74,6 +75,10 @@ private:
         if (name == "USE") {
             const std::size_t nameAt = in_.offset();
             const std::string ref = in_.readString("the name after USE");
+            // A connection source may also be an animated node still being read.
+            if (place == Place::ConnectionSource && !file_.defined.count(ref))
+                if (const auto p = file_.pending.find(ref); p != file_.pending.end())
+                    return ref_ptr<Node>(p->second);
             const auto it = file_.defined.find(ref);
             if (it == file_.defined.end())
                 in_.failAt(nameAt, "USE of undefined name '" + ref + "' (no complete DEF " + ref +
@@ -116,8 +121,13 @@ private:
 
         reader::MadeNode made = makeNode(typeName, typeAt, place);
         if (!defName.empty()) made.node->setName(reader::nodeNameFromDefName(defName));
+        const ref_ptr<Node> first = made.node; // kept alive for the binding below
+        std::optional<reader::EarlyBinding> early;
+        if (reader::bindsEarly(*first)) early.emplace(file_, defName, *first);
+        typeAt_ = typeAt;
         readFields(made, typeName); // may replace made.node (a described standard type)
         Node& node = *made.node;
+        early.reset(); // children see complete nodes only
 
         const bool hasChildren = file_.version >= 2.1f ? (flags & isGroupFlag) != 0 : made.isGroup;
         if (hasChildren) readChildren(node, typeName);
@@ -202,7 +212,8 @@ private:
 
     [[gnu::noinline]] [[noreturn]] void failNoFieldTypes(const std::string& typeName) {
         reader::MadeNode made = reader::makeNode(typeName, false, Place::Node, file_);
-        in_.fail(made.error.empty() ? "unknown node type '" + typeName + "'" : made.error);
+        in_.failAt(typeAt_,
+                   made.error.empty() ? "unknown node type '" + typeName + "'" : made.error);
     }
 
     // SelectOne, Gate, Concatenate: "type" and the input's field type come first.
@@ -363,6 +374,7 @@ private:
     BinaryInput in_;
     FileState& file_;
     bool describedOnly_ = false;
+    std::size_t typeAt_ = 0; ///< where the type name of the node whose fields are read is
 };
 
 } // namespace

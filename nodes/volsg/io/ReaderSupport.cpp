@@ -1,4 +1,5 @@
 #include <volsg/core/Error.h>
+#include <volsg/engines/AnimatedNodes.h>
 #include <volsg/engines/Engine.h>
 #include <volsg/engines/EngineTypes.h>
 #include <volsg/fields/Fields.h>
@@ -11,6 +12,8 @@
 #include <mutex>
 #include <sstream>
 #include <typeinfo>
+#include <unordered_set>
+#include <vector>
 
 namespace volsg::reader {
 
@@ -251,6 +254,53 @@ Field* checkConnection(Field& target, Node& source, const std::string& name, std
         return nullptr;
     }
     return from;
+}
+
+bool bindsEarly(const Node& node) {
+    return dynamic_cast<const Animated*>(&node) != nullptr;
+}
+
+void dropSelfConnections(Node& node) {
+    for (std::size_t i = 0, n = node.fieldCount(); i < n; ++i) {
+        Field* field = node.fieldAt(i);
+        const FieldConnection* c = field ? field->connection() : nullptr;
+        if (!c) continue;
+        // Does the source, or a source of its fields' connections, ... lead back here?
+        std::vector<Node*> stack{c->source.get()};
+        std::unordered_set<const Node*> seen;
+        bool cycle = false;
+        while (!stack.empty() && !cycle) {
+            Node* at = stack.back();
+            stack.pop_back();
+            if (!at || !seen.insert(at).second) continue;
+            if (at == &node) {
+                cycle = true;
+                break;
+            }
+            for (std::size_t k = 0, m = at->fieldCount(); k < m; ++k)
+                if (const Field* f = at->fieldAt(k); f && f->connection())
+                    stack.push_back(f->connection()->source.get());
+        }
+        if (cycle) field->disconnect();
+    }
+}
+
+EarlyBinding::EarlyBinding(FileState& file, const std::string& defName, Node& node) {
+    if (defName.empty() || !bindsEarly(node)) return;
+    file_ = &file;
+    defName_ = &defName;
+    node_ = &node;
+    file.pending[defName] = &node;
+}
+
+void EarlyBinding::endName() {
+    if (file_) file_->pending.erase(*defName_);
+}
+
+EarlyBinding::~EarlyBinding() {
+    if (!file_) return;
+    endName();
+    dropSelfConnections(*node_);
 }
 
 bool isTypedEngine(const Node& node) {

@@ -32,6 +32,11 @@ struct FileState {
     float version = 2.1f; ///< 1.0, 2.0 or 2.1
     bool binary = false;
     std::unordered_map<std::string, ref_ptr<Node>> defined;
+    /// Animated nodes (Rotor, Pendulum, Shuttle, Blinker) being read, by DEF name: Coin
+    /// writes their internal engines, whose inputs are connected to the node itself, inside
+    /// the node (`DEF b Blinker { whichChild = TimeCounter { on = ... USE b . on } . output`).
+    /// Only a connection source may name them before they are complete.
+    std::unordered_map<std::string, Node*> pending;
     int depth = 0;
     std::size_t nodeCount = 0;
 };
@@ -72,6 +77,31 @@ ref_ptr<Node> upgrade(UnknownNode& old, const FileState& file, std::string& erro
 /// The field of a connection source named `name` (a field, or an engine output); on error
 /// null, with `error` saying what is wrong, including when its values cannot become `target`'s.
 Field* checkConnection(Field& target, Node& source, const std::string& name, std::string& error);
+
+/// Whether the node is one whose DEF name a connection may use before the node is complete.
+bool bindsEarly(const Node& node);
+/// Drops the connections of the node's fields whose sources lead back to the node itself
+/// (Coin's internal engines of an animated node, which computes those fields itself).
+void dropSelfConnections(Node& node);
+
+/// While an animated node is read: its DEF name is pending (connections inside it may name
+/// it); when it is done, or reading fails inside it, the name is no longer pending and the
+/// connections of its fields that lead back to it are dropped, so no reference cycle keeps
+/// it alive.
+class EarlyBinding {
+public:
+    EarlyBinding(FileState& file, const std::string& defName, Node& node);
+    ~EarlyBinding();
+    EarlyBinding(const EarlyBinding&) = delete;
+    EarlyBinding& operator=(const EarlyBinding&) = delete;
+    /// Ends the pending name early (children see complete nodes only).
+    void endName();
+
+private:
+    FileState* file_ = nullptr;
+    const std::string* defName_ = nullptr;
+    Node* node_ = nullptr;
+};
 
 /// Names of the engine types whose input type is given before their fields (`type MFFloat`).
 bool isTypedEngine(const Node& node);

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <unordered_map>
 
 namespace volsg {
@@ -195,6 +196,14 @@ private:
         return node;
     }
 
+    // A connection source may also be an animated node still being read (ReaderSupport.h).
+    ref_ptr<Node> lookUpSource(const Token& at, const std::string& name) {
+        if (!file_.defined.count(name))
+            if (const auto it = file_.pending.find(name); it != file_.pending.end())
+                return ref_ptr<Node>(it->second);
+        return lookUp(at, name);
+    }
+
     ref_ptr<Node> lookUp(const Token& at, const std::string& name) {
         const auto it = file_.defined.find(name);
         if (it == file_.defined.end())
@@ -216,6 +225,9 @@ private:
 
         reader::MadeNode made = makeNode(typeToken, place);
         if (!defName.empty()) made.node->setName(reader::nodeNameFromDefName(defName));
+        const ref_ptr<Node> first = made.node; // kept alive for the binding below
+        std::optional<reader::EarlyBinding> early;
+        if (reader::bindsEarly(*first)) early.emplace(file_, defName, *first);
         if (tokens_.peek().isWord("fields") && !made.node->field("fields") && made.unknown &&
             made.unknown->description() == UnknownNode::Description::Declared)
             readFieldDescription(*made.node, made.unknown, typeName);
@@ -248,6 +260,7 @@ private:
             } else if (unknown && !childrenStarted && isRawField(*unknown, t)) {
                 readRawField(*unknown, typeName);
             } else if (children) {
+                if (early) early->endName(); // children see complete nodes only
                 if (children->size() >= limits::maxSceneChildren)
                     failTooManyChildren(t, typeName, open);
                 children->push_back(readNodeValue(false, Place::Node));
@@ -260,6 +273,7 @@ private:
             }
         }
         --file_.depth;
+        early.reset();
         if (reader::isOldForm(typeName, file_.version) && made.unknown) {
             std::string error;
             ref_ptr<Node> upgraded = reader::upgrade(*made.unknown, file_, error);
@@ -531,11 +545,12 @@ private:
                 tokens_.failAt(name,
                                "expected a name after USE, found " + Tokenizer::describe(name));
             const std::size_t dot = name.text.find('.');
-            if (dot != std::string::npos && !file_.defined.count(name.text)) {
-                source = lookUp(name, name.text.substr(0, dot));
+            if (dot != std::string::npos && !file_.defined.count(name.text) &&
+                !file_.pending.count(name.text)) {
+                source = lookUpSource(name, name.text.substr(0, dot));
                 output = name.text.substr(dot + 1);
             } else {
-                source = lookUp(name, name.text);
+                source = lookUpSource(name, name.text);
             }
             tokens_.next();
         } else {
