@@ -1,7 +1,7 @@
 # The build refuses an upward include. Layers, lowest first; a source may include headers of
 # its own layer and the ones below:
 #   1 lib/volsg/**                        engines and GL layers (know no nodes)
-#   2 nodes/volsg/nodes, nodes/volsg/io   node types and the reader that makes them
+#   2 nodes/volsg/{nodes,io,engines}     node types, engines and the reader that makes them
 #   3 nodes/volsg/<other>                 traversals that know node types (volsg_scene)
 #   4 manipulators/                       draggers and navigation
 #   5 editors/                            UI-free editor models and their panels
@@ -12,7 +12,7 @@
 function(volsg_layer_of path out)
   if(path MATCHES "^lib/")
     set(layer 1)
-  elseif(path MATCHES "^nodes/volsg/(nodes|io)/")
+  elseif(path MATCHES "^nodes/volsg/(nodes|io|engines)/")
     set(layer 2)
   elseif(path MATCHES "^nodes/")
     set(layer 3)

@@ -133,9 +133,17 @@ TEST_CASE("NaN and 1e39 in a float field are errors at the value") {
                 "bad.iv:2:32:", "not a finite number");
 }
 
-TEST_CASE("a binary Inventor header is refused") {
-    CHECK_ERROR("#Inventor V2.1 binary\n\x01\x02\x03",
-                "bad.iv:1:1:", "binary Inventor files are not supported");
+TEST_CASE("a binary Inventor file cut short is an error at a byte offset") {
+    // The header line is 22 bytes with its '\n'; the 3 bytes after it cannot hold a name.
+    try {
+        readSceneFromString(std::string("#Inventor V2.1 binary\n\x01\x02\x03", 25), "bad.iv");
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()) ==
+              "bad.iv: byte 22: unexpected end of file: a node type name needs 4 bytes, 3 left");
+    }
+    CHECK_ERROR("#Inventor V1.0 binary\n",
+                "bad.iv:1:1:", "Inventor V1.0 binary files are not supported");
 }
 
 TEST_CASE("an empty file is an error") {
@@ -145,7 +153,7 @@ TEST_CASE("an empty file is an error") {
 TEST_CASE("a file without a header is an error") {
     CHECK_ERROR("Separator { Cube { } }\n",
                 "bad.iv:1:1:", "missing header: the first line must be '#Inventor V2.1 ascii'");
-    CHECK_ERROR("#Inventor V1.0 ascii\nCube { }", "bad.iv:1:1:", "unsupported header");
+    CHECK_ERROR("#Inventor V3.0 ascii\nCube { }", "bad.iv:1:1:", "unsupported header");
     CHECK_ERROR("#VRML V2.0 utf8\nShape { }", "bad.iv:1:1:", "unsupported header");
 }
 

@@ -22,7 +22,8 @@ H = "#Inventor V2.1 ascii\n"
 # --- scene ---
 case("scene-empty.iv", "", "empty file")
 case("scene-bad-magic.iv", "Separator { Cube {} }\n", "missing header")
-case("scene-binary-header.iv", "#Inventor V2.1 binary\n\x00\x01", "binary Inventor files are not supported")
+case("scene-binary-header.iv", "#Inventor V2.1 binary\n\x00\x01",
+     "byte 22: unexpected end of file: a node type name needs 4 bytes, 2 left")
 case("scene-truncated.iv", H + "Separator { Cube { width 2", "unexpected end of file")
 case("scene-truncated-list.iv", H + "Coordinate3 { point [ 0 0 0, 1 1", "expected a number, found end of file")
 case("scene-nan.iv", H + "Cube { width nan }\n", "expects SFFloat")
@@ -43,6 +44,76 @@ case("scene-nul.iv", H + "Cube\x00 {}\n", "control character")
 case("scene-non-utf8-word.iv", H + "Cube { wid\xff\xfeth 2 }\n", "unknown field 'wid\\xFF\\xFEth' in Cube")
 case("scene-unclosed-string.iv", H + 'VolumeData { fileName "abc\n', "unterminated string")
 case("scene-stray-brace.iv", H + "}\n", "unexpected '}'")
+
+# --- binary scene files (docs/SCENE-FORMAT.md section 1.9) ---
+BH = b"#Inventor V2.1 binary  \n"  # 24 bytes: the first item is at byte 24
+
+
+def u32(v):
+    return struct.pack(">I", v & 0xFFFFFFFF)
+
+
+def f32(v):
+    return struct.pack(">f", v)
+
+
+def bstr(s):
+    b = s.encode("latin-1")
+    return u32(len(b)) + b + b"\0" * ((4 - len(b) % 4) % 4)
+
+
+def bnode(type_name, fields=b"", nfields=0, children=None, flags=None):
+    """A node: its type name, flags (IS_GROUP when it has children), the field word, the
+    fields, then the child count and children."""
+    if flags is None:
+        flags = 2 if children is not None else 0
+    out = bstr(type_name) + u32(flags) + u32(nfields) + fields
+    if children is not None:
+        out += u32(len(children)) + b"".join(children)
+    return out
+
+
+cube = bnode("Cube", bstr("width") + f32(2.0) + u32(0), 1)
+case("scene-binary-truncated.iv", BH + bnode("Separator", children=[cube])[:-6],
+     "unexpected end of file")
+case("scene-binary-huge-count.iv",
+     BH + bnode("Coordinate3", bstr("point") + u32(0xFFFFFF) + f32(1) * 6 + u32(0), 1),
+     "byte 60: field 'point' of Coordinate3 expects MFVec3f: the list: 16777215 values of at least 12 bytes each do not fit in the 28 bytes left")
+case("scene-binary-count-past-limit.iv",
+     BH + bnode("Coordinate3", bstr("point") + u32(0x7FFFFFFF) + u32(0), 1),
+     "more than 16777216 values in one MFVec3f field")
+case("scene-binary-negative-count.iv",
+     BH + bnode("Coordinate3", bstr("point") + u32(0xFFFFFFFF) + u32(0), 1),
+     "negative value count -1")
+case("scene-binary-huge-children.iv", BH + bstr("Separator") + u32(2) + u32(0) + u32(0xFFFFFFF0),
+     "Separator has more than 1048576 children")
+case("scene-binary-children-past-end.iv", BH + bstr("Separator") + u32(2) + u32(0) + u32(1000),
+     "the children: 1000 values of at least 12 bytes each do not fit")
+case("scene-binary-huge-string.iv", BH + u32(0x7FFFFFFF) + b"Cube",
+     "a string of 2147483647 bytes, more than the limit of 67108864")
+case("scene-binary-string-past-end.iv", BH + u32(0x100) + b"Cube",
+     "unexpected end of file: a node type name is a string of 256 bytes, 4 left")
+deep = b""
+for i in range(1001):
+    deep = bnode("Separator", children=[deep] if deep else [])
+case("scene-binary-deep-nesting.iv", BH + deep, "nodes nested deeper than 1000 levels")
+case("scene-binary-unknown-type.iv", BH + bnode("Teapot"),
+     "byte 24: unknown node type 'Teapot' without a description of its fields")
+case("scene-binary-unknown-field.iv", BH + bnode("Cube", bstr("colour") + f32(1) + u32(0), 1),
+     "unknown field 'colour' in Cube")
+case("scene-binary-nan.iv", BH + bnode("Cube", bstr("width") + u32(0x7FC00000) + u32(0), 1),
+     "field 'width' of Cube expects SFFloat: a float is not a finite number")
+case("scene-binary-bad-node-flags.iv", BH + bstr("Cube") + u32(0x80) + u32(0),
+     "unknown node flags 0x80 for Cube")
+case("scene-binary-bad-field-flags.iv", BH + bnode("Cube", bstr("width") + f32(1) + u32(0x10), 1),
+     "unknown field flags 0x10 of 'width' of Cube")
+case("scene-binary-undefined-use.iv", BH + bnode("Separator", children=[bstr("USE") + bstr("x")]),
+     "USE of undefined name 'x'")
+case("scene-binary-engine-as-child.iv",
+     BH + bnode("Separator", children=[bnode("ElapsedTime", flags=1)]),
+     "'ElapsedTime' is an engine: it can only be the source of a field connection")
+case("scene-binary-v1.iv", b"#Inventor V1.0 binary  \n" + bnode("Cube"),
+     "Inventor V1.0 binary files are not supported")
 
 # --- NRRD (.nrrd attached, .nhdr detached) ---
 N = "NRRD0004\ntype: uchar\ndimension: 3\n"

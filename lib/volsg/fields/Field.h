@@ -2,11 +2,15 @@
 // Base of every typed field: a named value of a node, readable and writable as Inventor ASCII.
 
 #include <iosfwd>
+#include <memory>
+#include <string>
+
+#include <volsg/core/Node.h>
 #include <volsg/core/Object.h>
 
 namespace volsg {
 
-class Node;
+class BinaryInput;
 class Tokenizer;
 
 /// What a field needs from the scene reader: tokens, and nodes for SFNode/MFNode values.
@@ -14,6 +18,9 @@ class FieldInput {
 public:
     virtual ~FieldInput() = default;
     virtual Tokenizer& tokens() = 0;
+    /// Non-null when the value is read from a binary Inventor file (io/BinaryInput.h): the
+    /// field reads its binary layout from there instead of tokens().
+    virtual BinaryInput* binary() { return nullptr; }
     /// Reads one node value (`Type { ... }`, `DEF name Type { ... }`, `USE name`, or `NULL`,
     /// which gives null).
     virtual ref_ptr<Node> readNode() = 0;
@@ -26,6 +33,17 @@ public:
     virtual std::ostream& stream() = 0;
     virtual void writeNode(const Node* node) = 0; ///< writes `NULL` for null
     virtual void newline() = 0;                   ///< a new line at the current indentation
+};
+
+/// Where a connected field takes its value from (Inventor's `field = Source . output`): a
+/// field of a node, or an output of an engine (an Engine is a Node that is never a child,
+/// nodes/volsg/engines/Engine.h). The connection keeps its source alive.
+struct FieldConnection {
+    ref_ptr<Node> source;
+    std::string sourceField; ///< the source's field or engine output
+    /// The source value last copied (owned by the evaluator, nodes/volsg/engines): a value
+    /// is copied again only when the source changes.
+    std::shared_ptr<Field> lastCopied;
 };
 
 /// A named, typed value owned by a node. Setting it bumps the owner's version, so caches
@@ -50,6 +68,18 @@ public:
     bool isDefault() const { return isDefault_; }
     void setDefault(bool d) { isDefault_ = d; }
 
+    /// Inventor's ignore flag (`value ~` in a file): kept and written back.
+    bool isIgnored() const { return isIgnored_; }
+    void setIgnored(bool ignored);
+
+    /// The connection this field takes its value from, or null.
+    const FieldConnection* connection() const { return connection_.get(); }
+    FieldConnection* connection() { return connection_.get(); }
+    /// Connects the field to `sourceField` of `source` (a node field or an engine output);
+    /// the evaluator (nodes/volsg/engines/Evaluator.h) copies the value.
+    void connectFrom(ref_ptr<Node> source, std::string sourceField);
+    void disconnect();
+
 protected:
     void changed(); ///< marks the field set and bumps the owner's version
 
@@ -57,6 +87,8 @@ private:
     Node* owner_;
     const char* name_;
     bool isDefault_ = true;
+    bool isIgnored_ = false;
+    std::unique_ptr<FieldConnection> connection_;
 };
 
 } // namespace volsg

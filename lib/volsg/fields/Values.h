@@ -1,6 +1,9 @@
 #pragma once
 // Value types of fields that GLM does not provide directly.
 
+#include <cstdint>
+#include <vector>
+
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -21,6 +24,16 @@ struct Plane {
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
     float distance = 0.0f;
     bool operator==(const Plane&) const = default;
+};
+
+/// An SFImage value: width x height pixels of 0 to 4 byte components each, rows bottom to
+/// top (Inventor's layout). Empty is 0 0 0.
+struct ImageValue {
+    int width = 0;
+    int height = 0;
+    int components = 0;
+    std::vector<std::uint8_t> pixels; ///< width * height * components bytes
+    bool operator==(const ImageValue&) const = default;
 };
 
 } // namespace volsg

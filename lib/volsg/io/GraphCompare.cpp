@@ -41,7 +41,7 @@ std::string typeNameOf(const Node& node) {
 
 class GraphComparer {
 public:
-    explicit GraphComparer(std::string* why) : why_(why) {}
+    GraphComparer(std::string* why, double tolerance) : why_(why), tolerance_(tolerance) {}
 
     bool compare(const Node* a, const Node* b, const std::string& where) {
         if (!a || !b)
@@ -92,6 +92,19 @@ private:
         if (fa->isDefault() != fb->isDefault())
             return fail(where,
                         fa->isDefault() ? "default on the left only" : "default on the right only");
+        if (fa->isIgnored() != fb->isIgnored())
+            return fail(where,
+                        fa->isIgnored() ? "ignored on the left only" : "ignored on the right only");
+        const FieldConnection* ca = fa->connection();
+        const FieldConnection* cb = fb->connection();
+        if ((ca == nullptr) != (cb == nullptr))
+            return fail(where, ca ? "connected on the left only" : "connected on the right only");
+        if (ca) {
+            if (ca->sourceField != cb->sourceField)
+                return fail(where, "connected from '" + ca->sourceField + "' vs '" +
+                                       cb->sourceField + "'");
+            if (!compare(ca->source.get(), cb->source.get(), where + " = ")) return false;
+        }
         if (const auto* sa = dynamic_cast<const SFNode*>(fa)) {
             const auto* sb = dynamic_cast<const SFNode*>(fb);
             return sb ? compare(sa->getValue(), sb->getValue(), where)
@@ -109,7 +122,10 @@ private:
                     return false;
             return true;
         }
-        if (!fa->equals(*fb))
+        // A field that is default on both sides is not written; its value does not count (a
+        // binary file may carry a value and flag it default).
+        if (fa->isDefault()) return true;
+        if (!fa->equals(*fb) && !(tolerance_ > 0.0 && valuesClose(*fa, *fb, tolerance_)))
             return fail(where, "value " + ValueText::of(*fa) + " vs " + ValueText::of(*fb));
         return true;
     }
@@ -120,13 +136,14 @@ private:
     }
 
     std::string* why_;
+    double tolerance_;
     std::unordered_map<const Node*, const Node*> aToB_, bToA_;
 };
 
 } // namespace
 
-bool graphsEqual(const Node& a, const Node& b, std::string* why) {
-    GraphComparer comparer(why);
+bool graphsEqual(const Node& a, const Node& b, std::string* why, double relativeTolerance) {
+    GraphComparer comparer(why, relativeTolerance);
     return comparer.compare(&a, &b, "");
 }
 

@@ -36,7 +36,14 @@ const char* fileTypeName(const Node& node) {
 }
 
 bool describesFields(const Node& node) {
-    return !node.type().isInventorBuiltin() || dynamic_cast<const UnknownNode*>(&node);
+    if (const auto* unknown = dynamic_cast<const UnknownNode*>(&node))
+        return unknown->description() == UnknownNode::Description::Declared;
+    return !node.type().isInventorBuiltin();
+}
+
+/// A field is written when it has a value, an ignore flag or a connection.
+bool isWritten(const Field& field) {
+    return !field.isDefault() || field.isIgnored() || field.connection();
 }
 
 /// Two passes: the first walks the graph in writing order to count how often each node is
@@ -78,7 +85,7 @@ public:
         if (describesFields(*node)) writeFieldDescription(*node);
         for (std::size_t i = 0, n = node->fieldCount(); i < n; ++i) {
             const Field* field = node->fieldAt(i);
-            if (field && !field->isDefault()) writeField(*node, *field);
+            if (field && isWritten(*field)) writeField(*node, *field);
         }
         if (const auto* children = node->children())
             for (const auto& child : *children) {
@@ -101,7 +108,8 @@ private:
         bool written = false;
     };
 
-    // Mirrors writeNode()'s order exactly: non-default SFNode/MFNode values, then children.
+    // Mirrors writeNode()'s order exactly: per written field its SFNode/MFNode value (when not
+    // default) and its connection's source, then the children.
     void countReferences(const Node* node) {
         if (!node) return;
         const auto [it, firstTime] = visits_.try_emplace(node);
@@ -113,12 +121,15 @@ private:
         order_.push_back(node);
         for (std::size_t i = 0, n = node->fieldCount(); i < n; ++i) {
             const Field* field = node->fieldAt(i);
-            if (!field || field->isDefault()) continue;
-            if (const auto* sf = dynamic_cast<const SFNode*>(field))
-                countReferences(sf->getValue());
-            else if (const auto* mf = dynamic_cast<const MFNode*>(field))
-                for (const auto& value : mf->getValues())
-                    countReferences(value.get());
+            if (!field || !isWritten(*field)) continue;
+            if (!field->isDefault()) {
+                if (const auto* sf = dynamic_cast<const SFNode*>(field))
+                    countReferences(sf->getValue());
+                else if (const auto* mf = dynamic_cast<const MFNode*>(field))
+                    for (const auto& value : mf->getValues())
+                        countReferences(value.get());
+            }
+            if (const FieldConnection* c = field->connection()) countReferences(c->source.get());
         }
         if (const auto* children = node->children())
             for (const auto& child : *children)
@@ -169,20 +180,31 @@ private:
         out_ << " ]";
     }
 
+    // name [value] [~] [= source . output]
     void writeField(const Node& node, const Field& field) {
         newline();
-        out_ << field.name() << ' ';
-        // Continuation lines of a value go one level deeper; a single node value stays level
-        // with its field, so its closing brace lines up with the field name.
-        const int valueIndent = dynamic_cast<const SFNode*>(&field) ? 0 : 1;
-        indent_ += valueIndent;
-        try {
-            field.write(*this);
-        } catch (const Error& e) {
-            throw Error("cannot write field '" + std::string(field.name()) + "' of " +
-                        fileTypeName(node) + ": " + e.message());
+        out_ << field.name();
+        // A trigger has no value to write.
+        if (!field.isDefault() && !dynamic_cast<const SFTrigger*>(&field)) {
+            out_ << ' ';
+            // Continuation lines of a value go one level deeper; a single node value stays
+            // level with its field, so its closing brace lines up with the field name.
+            const int valueIndent = dynamic_cast<const SFNode*>(&field) ? 0 : 1;
+            indent_ += valueIndent;
+            try {
+                field.write(*this);
+            } catch (const Error& e) {
+                throw Error("cannot write field '" + std::string(field.name()) + "' of " +
+                            fileTypeName(node) + ": " + e.message());
+            }
+            indent_ -= valueIndent;
         }
-        indent_ -= valueIndent;
+        if (field.isIgnored()) out_ << " ~";
+        if (const FieldConnection* c = field.connection()) {
+            out_ << " = ";
+            writeNode(c->source.get());
+            out_ << " . " << c->sourceField;
+        }
     }
 
     std::ostream& out_;

@@ -234,12 +234,27 @@ const Token& Tokenizer::peek() {
     return peeked_;
 }
 
+const Token& Tokenizer::peekSecond() {
+    peek();
+    if (!hasSecond_) {
+        second_ = lex();
+        hasSecond_ = true;
+    }
+    return second_;
+}
+
 Token Tokenizer::next() {
     peek();
-    hasPeeked_ = false;
     lastLine_ = peeked_.line;
     lastColumn_ = peeked_.column;
-    return std::move(peeked_);
+    Token t = std::move(peeked_);
+    if (hasSecond_) {
+        peeked_ = std::move(second_);
+        hasSecond_ = false;
+    } else {
+        hasPeeked_ = false;
+    }
+    return t;
 }
 
 bool Tokenizer::atEnd() {

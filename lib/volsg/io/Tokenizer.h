@@ -40,6 +40,7 @@ public:
     Tokenizer(std::string_view text, std::string fileName);
 
     const Token& peek();                      ///< the next token, not consumed
+    const Token& peekSecond();                ///< the token after peek(), not consumed
     Token next();                             ///< consumes the next token
     bool atEnd();                             ///< no tokens left
     bool acceptPunct(char c);                 ///< consumes `c` if it is next
@@ -73,6 +74,8 @@ private:
     int column_ = 1;
     Token peeked_;
     bool hasPeeked_ = false;
+    Token second_;
+    bool hasSecond_ = false;
     Token last_; ///< the token consumed last (numbers are parsed from here)
     int lastLine_ = 1;
     int lastColumn_ = 1;
