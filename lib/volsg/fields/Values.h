@@ -33,6 +33,7 @@ struct ImageValue {
     int height = 0;
     int components = 0;
     std::vector<std::uint8_t> pixels; ///< width * height * components bytes
+    bool empty() const { return width <= 0 || height <= 0 || components <= 0; }
     bool operator==(const ImageValue&) const = default;
 };
 

@@ -11,7 +11,7 @@
 
 namespace volsg {
 
-InlineImage readTextureFile(const std::string& path) {
+ImageValue readTextureFile(const std::string& path) {
     regularFileSize(path, "cannot read texture file", limits::maxImageFileSize);
     int width = 0, height = 0, components = 0;
     std::unique_ptr<unsigned char, void (*)(unsigned char*)> data(
@@ -29,11 +29,12 @@ InlineImage readTextureFile(const std::string& path) {
         throw Error("texture file of " + std::to_string(width) + " x " + std::to_string(height) +
                         " x " + std::to_string(components) + " is outside the image limits",
                     path);
-    InlineImage image;
-    image.size = {width, height};
+    ImageValue image;
+    image.width = width;
+    image.height = height;
     image.components = components;
-    image.bytes.resize(std::size_t(width) * std::size_t(height) * std::size_t(components));
-    std::memcpy(image.bytes.data(), data.get(), image.bytes.size());
+    image.pixels.resize(std::size_t(width) * std::size_t(height) * std::size_t(components));
+    std::memcpy(image.pixels.data(), data.get(), image.pixels.size());
     return image;
 }
 

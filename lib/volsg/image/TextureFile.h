@@ -4,12 +4,12 @@
 
 #include <string>
 
-#include <volsg/fields/ImageField.h>
+#include <volsg/fields/Values.h>
 
 namespace volsg {
 
 /// The file's texels, rows bottom up (as Inventor's SoSFImage holds them). Throws Error naming
 /// the file when it is not a regular file, is larger than the image limits or cannot be read.
-InlineImage readTextureFile(const std::string& path);
+ImageValue readTextureFile(const std::string& path);
 
 } // namespace volsg

@@ -1,4 +1,4 @@
-#include <volsg/fields/ImageField.h>
+#include <volsg/fields/Values.h>
 #include <volsg/render/GpuMesh.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/render/ShapeShaders.h>
@@ -224,13 +224,13 @@ void ShapeRenderer::draw(const DrawItem& item) {
     ++drawsLastFrame_;
 }
 
-void ShapeTexture::upload(const InlineImage& image, bool repeatS, bool repeatT) {
+void ShapeTexture::upload(const ImageValue& image, bool repeatS, bool repeatT) {
     if (!texture) texture = Texture(GL_TEXTURE_2D);
     static constexpr GLenum formats[4] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
     static constexpr GLenum internal[4] = {GL_R8, GL_RG8, GL_RGB8, GL_RGBA8};
     const int c = std::clamp(image.components, 1, 4);
-    texture.image2D(internal[c - 1], image.size.x, image.size.y, formats[c - 1], GL_UNSIGNED_BYTE,
-                    image.bytes.data());
+    texture.image2D(internal[c - 1], image.width, image.height, formats[c - 1], GL_UNSIGNED_BYTE,
+                    image.pixels.data());
     // Grey (and grey + alpha) images act as luminance textures, as in Inventor.
     const GLint swizzle[4][4] = {{GL_RED, GL_RED, GL_RED, GL_ONE},
                                  {GL_RED, GL_RED, GL_RED, GL_GREEN},

@@ -18,7 +18,7 @@
 namespace volsg {
 
 struct GpuMesh;
-struct InlineImage;
+struct ImageValue;
 struct Mesh;
 
 /// Inventor's SoMaterial values for one shape (its defaults without a Material in scope).
@@ -34,7 +34,7 @@ struct ShapeTexture {
     bool uploaded = false;
     /// Uploads the texels (1 to 4 components; grey becomes (L, L, L, 1), grey-alpha
     /// (L, L, L, A)) with mipmaps and the wrap modes (true: repeat, false: clamp).
-    void upload(const InlineImage& image, bool repeatS, bool repeatT);
+    void upload(const ImageValue& image, bool repeatS, bool repeatT);
 };
 
 /// How a shape's texture applies (Inventor's SoTexture2 models), with its coordinates.

@@ -17,9 +17,9 @@
 #include <volsg/nodes/OrthoSlice.h>
 #include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/Shape.h>
-#include <volsg/render/InventorRendering.h>
 #include <volsg/nodes/Text2.h>
 #include <volsg/nodes/TextFont.h>
+#include <volsg/render/InventorRendering.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/sections/SliceSampler.h>
 #include <volsg/text/ScreenTextRenderer.h>
@@ -359,14 +359,14 @@ void PickAction::beginTraversal(Node& root) {
         far_ = pr.farDistance;
         rayValid_ = true;
         // LOD and LevelOfDetail choose their child by this camera.
-        StateView view;
-        view.view = camera->viewMatrix(cameraModel);
-        view.projection = camera->projectionMatrix(aspect);
-        view.eye = glm::dvec3(glm::inverse(view.view)[3]);
-        view.projected = true;
-        view.width = width_;
-        view.height = height_;
-        state().setView(view);
+        StateView stateView;
+        stateView.view = view;
+        stateView.projection = projection;
+        stateView.eye = glm::dvec3(glm::inverse(view)[3]);
+        stateView.projected = true;
+        stateView.width = width_;
+        stateView.height = height_;
+        state().setView(stateView);
     }
     if (!rayValid_) return;
     if (!hasPixel_) {

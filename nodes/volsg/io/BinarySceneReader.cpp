@@ -122,7 +122,7 @@ private:
         reader::MadeNode made = makeNode(typeName, typeAt, place);
         if (!defName.empty()) made.node->setName(reader::nodeNameFromDefName(defName));
         made.node->setSourcePlace({file_.sharedName(), 0, 0}); // binary: the file alone
-        const ref_ptr<Node> first = made.node; // kept alive for the binding below
+        const ref_ptr<Node> first = made.node;                 // kept alive for the binding below
         std::optional<reader::EarlyBinding> early;
         if (reader::bindsEarly(*first)) early.emplace(file_, defName, *first);
         typeAt_ = typeAt;

@@ -18,9 +18,9 @@ std::string Texture2::path() const {
     return ReadContext{{}, directory_}.resolve(filename());
 }
 
-const InlineImage& Texture2::texels() const {
+const ImageValue& Texture2::texels() const {
     if (loadedVersion_ != version()) {
-        loaded_ = InlineImage{}; // a failed read leaves nothing stale behind
+        loaded_ = ImageValue{}; // a failed read leaves nothing stale behind
         loaded_ = filename().empty() ? image() : readTextureFile(path());
         loadedVersion_ = version();
     }

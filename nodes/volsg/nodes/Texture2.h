@@ -7,7 +7,6 @@
 
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
-#include <volsg/fields/ImageField.h>
 
 namespace volsg {
 
@@ -28,7 +27,7 @@ public:
 
     /// The texels: the file when filename is set, else the inline image (empty: no texture).
     /// Read on first use and again after a field changes. Throws Error naming the file.
-    const InlineImage& texels() const;
+    const ImageValue& texels() const;
     /// filename resolved against the scene file's folder.
     std::string path() const;
 
@@ -40,7 +39,7 @@ protected:
 
 private:
     std::string directory_;
-    mutable InlineImage loaded_;
+    mutable ImageValue loaded_;
     mutable std::uint64_t loadedVersion_ = 0;
 };
 
