@@ -1,6 +1,8 @@
 #include <volsg/nodes/VolumeData.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <string>
 
 #include <volsg/actions/Action.h>
@@ -199,6 +201,17 @@ void VolumeData::load() const {
     if (generator() != NONE && !spacing.isDefault()) {
         data->setSpacing(glm::dvec3(spacing()));
         if (tags) tags->setSpacing(glm::dvec3(spacing()));
+    }
+    // Every path normalises values by (v - min) / (max - min) in single precision: finite
+    // FLOAT values whose span is not finite there would all map to 0 (a blank image).
+    if (data->type() == VoxelType::Float) {
+        const auto [low, high] = data->minMax();
+        if (!(high - low <= double(std::numeric_limits<float>::max()))) {
+            char text[96];
+            std::snprintf(text, sizeof text, "FLOAT voxel values span %.3g to %.3g", low, high);
+            throw Error(std::string(text) +
+                        ", wider than single precision holds (3.4e38): rescale the data");
+        }
     }
     if (tags && tags->dimensions() != data->dimensions())
         throw Error("VolumeData tag volume '" + tagFileName() +
