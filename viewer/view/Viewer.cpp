@@ -204,7 +204,7 @@ void Viewer::onKey(int key, int mods) {
 }
 
 bool Viewer::isInteracting() const {
-    if (drag_ != Drag::None && drag_ != Drag::Pending) return true;
+    if (drag_ != Drag::None && drag_ != Drag::Pending && drag_ != Drag::SectionPending) return true;
     if (fly_ && fly_->speed() != 0.0) return true;            // the view moves every frame
     if (navigation_ && navigation_->isSeeking()) return true; // the seek flies every frame
     // Dragging in an editor canvas or on a slider counts too: the render should keep up.
@@ -221,12 +221,12 @@ void Viewer::handleSceneEvents() {
             if (e.pressed && drag_ == Drag::None && !io.WantCaptureMouse) {
                 mouse_ = e.position;
                 const int view = viewAt(mouse_);
-                if (view > kView3D) { // a section view: the cursor moves to the clicked point
-                    const ViewRect r = viewRect(view);
-                    const glm::dvec2 local = mouse_ - glm::dvec2(r.x, r.y);
-                    if (const auto voxel =
-                            sections_.voxelAtPixel(view - 1, local, r.width, r.height))
-                        setCursor(*voxel);
+                if (view > kView3D && e.button == GLFW_MOUSE_BUTTON_LEFT) {
+                    // A section view: a click moves the cursor there, a drag is window/level.
+                    drag_ = Drag::SectionPending;
+                    dragView_ = view;
+                    dragButton_ = e.button;
+                    dragStart_ = lastMouse_ = mouse_;
                 } else if (view == kView3D) {
                     beginSceneDrag(e.button, e.mods);
                 }
@@ -340,6 +340,7 @@ void Viewer::handleSceneEvents() {
 
 void Viewer::beginSceneDrag(int button, int mods) {
     dragStart_ = lastMouse_ = mouse_;
+    dragView_ = kView3D;
     dragButton_ = button;
     const Ray ray = navigation_->pixelRay(mouse_);
     const bool shift = mods & GLFW_MOD_SHIFT, ctrl = mods & GLFW_MOD_CONTROL,
@@ -390,6 +391,11 @@ void Viewer::beginSceneDrag(int button, int mods) {
         } else {
             dragButton_ = -1;
         }
+    } else if (button == GLFW_MOUSE_BUTTON_RIGHT && ctrl) {
+        // Window/level (3D Slicer): horizontal = window width, vertical = level.
+        drag_ = Drag::WindowLevel;
+        dragView_ = kView3D;
+        tfEditor_.beginWindowLevel();
     } else if (button == GLFW_MOUSE_BUTTON_MIDDLE || (button == GLFW_MOUSE_BUTTON_LEFT && shift)) {
         drag_ = Drag::Pan;
     } else if (button == GLFW_MOUSE_BUTTON_RIGHT || (button == GLFW_MOUSE_BUTTON_LEFT && alt)) {
@@ -401,6 +407,16 @@ void Viewer::beginSceneDrag(int button, int mods) {
 
 void Viewer::continueSceneDrag() {
     switch (drag_) {
+    case Drag::SectionPending:
+        if (glm::length(mouse_ - dragStart_) <= kClickSlop) return;
+        drag_ = Drag::WindowLevel;
+        tfEditor_.beginWindowLevel();
+        [[fallthrough]];
+    case Drag::WindowLevel: {
+        const ViewRect r = viewRect(dragView_);
+        tfEditor_.dragWindowLevel(mouse_ - dragStart_, glm::dvec2(r.width, r.height));
+        break;
+    }
     case Drag::Pending:
         if (glm::length(mouse_ - dragStart_) <= kClickSlop) return;
         drag_ = Drag::Rotate;
@@ -432,7 +448,14 @@ void Viewer::continueSceneDrag() {
 }
 
 void Viewer::endSceneDrag() {
-    if (drag_ == Drag::Pending) { // a click: select what is under the mouse, cursor there
+    if (drag_ == Drag::SectionPending) { // a click in a section view: the cursor goes there
+        const ViewRect r = viewRect(dragView_);
+        const glm::dvec2 local = dragStart_ - glm::dvec2(r.x, r.y);
+        if (const auto voxel = sections_.voxelAtPixel(dragView_ - 1, local, r.width, r.height))
+            setCursor(*voxel);
+    } else if (drag_ == Drag::WindowLevel) {
+        tfEditor_.endWindowLevel();
+    } else if (drag_ == Drag::Pending) { // a click: select what is under the mouse, cursor there
         const Ray ray = navigation_->pixelRay(mouse_);
         const auto hit = pickScene(*root_, ray);
         select(hit ? hit->node : nullptr);
@@ -865,18 +888,10 @@ void Viewer::runScriptStep() {
             break;
         }
         case K::Panel:
-            if (s.text == "tf")
-                showTf_ = true;
-            else if (s.text == "planeOpacity")
-                showPlane_ = true;
-            else if (s.text == "material")
-                showMaterial_ = true;
-            else if (s.text == "fields")
-                showFields_ = true;
-            else if (s.text == "region")
-                showRegion_ = true;
-            else
+            if (s.text != "tf" && s.text != "planeOpacity" && s.text != "material" &&
+                s.text != "fields" && s.text != "region")
                 throw Error("unknown panel '" + s.text + "'");
+            revealPanel_ = s.text;
             options_.panels = true;
             break;
         case K::Layout:
@@ -917,27 +932,21 @@ void Viewer::runScriptStep() {
     }
 }
 
+WindowLayout Viewer::layout() const {
+    const bool four = options_.layout == ViewLayout::Four && sections_.valid();
+    return layoutWindow(window_->size(), options_.panels,
+                        four ? ViewLayout::Four : ViewLayout::Single);
+}
+
 Viewer::ViewRect Viewer::viewRect(int view) const {
-    const glm::ivec2 size = glm::max(window_->size(), glm::ivec2(1));
-    if (options_.layout == ViewLayout::Single) return {0, 0, size.x, size.y};
-    // 2x2, all four the same size: 3D | axial over coronal | sagittal.
-    const int w = std::max(size.x / 2, 1), h = std::max(size.y / 2, 1);
-    switch (view) {
-    case 1 + SectionViews::Axial:
-        return {w, 0, w, h};
-    case 1 + SectionViews::Coronal:
-        return {0, h, w, h};
-    case 1 + SectionViews::Sagittal:
-        return {w, h, w, h};
-    default:
-        return {0, 0, w, h};
-    }
+    const WindowLayout l = layout();
+    return view >= 0 && view < l.viewCount ? l.views[std::size_t(view)] : l.views[0];
 }
 
 int Viewer::viewAt(const glm::dvec2& pixel) const {
-    const int views = options_.layout == ViewLayout::Four && sections_.valid() ? 4 : 1;
-    for (int v = 0; v < views; ++v)
-        if (viewRect(v).contains(pixel)) return v;
+    const WindowLayout l = layout();
+    for (int v = 0; v < l.viewCount; ++v)
+        if (l.views[std::size_t(v)].contains(pixel)) return v;
     return -1;
 }
 
@@ -1007,7 +1016,7 @@ void Viewer::renderViews() {
     o.camera = navigation_->cameraPtr();
     const bool four = options_.layout == ViewLayout::Four && sections_.valid();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (four) { // the seams between the views
+    { // under the panel column (and the seams between views, if any): nothing stale shows
         const glm::ivec2 size = window_->size();
         glViewport(0, 0, size.x, size.y);
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
@@ -1105,155 +1114,6 @@ int Viewer::run() {
     while (!quit_ && !window_->shouldClose())
         frame();
     return exitStatus_;
-}
-
-// ---- panels ---------------------------------------------------------------------------------
-
-void Viewer::drawSceneTree(Node& node, int depth) {
-    Node* original = originalOf(&node);
-    std::string label = std::string(node.type().name());
-    if (!original->getName().empty()) label += " " + original->getName();
-    label += "##" + std::to_string(reinterpret_cast<std::uintptr_t>(&node)) + "_" +
-             std::to_string(depth);
-    auto* children = node.children();
-    ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth;
-    if (!children || children->empty())
-        flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
-    if (depth < 2) flags |= ImGuiTreeNodeFlags_DefaultOpen;
-    if (selected_.get() == original) flags |= ImGuiTreeNodeFlags_Selected;
-    const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
-    if (ImGui::IsItemClicked()) select(original);
-    if (open && children && !children->empty()) {
-        if (depth < 32)
-            for (const auto& child : *children)
-                if (child) drawSceneTree(*child, depth + 1);
-        ImGui::TreePop();
-    }
-}
-
-void Viewer::drawPanels() {
-    const ImGuiIO& io = ImGui::GetIO();
-    const float w = io.DisplaySize.x, h = io.DisplaySize.y;
-    // Side columns, narrower in small windows so that the middle still shows the scene.
-    const float left = std::min(330.0f, 0.28f * w), right = std::min(400.0f, 0.34f * w);
-    const float tfHeight = std::min(330.0f, 0.62f * h), planeHeight = std::min(190.0f, 0.38f * h);
-
-    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(left, h * 0.45f), ImGuiCond_FirstUseEver);
-    ImGui::Begin("Scene");
-    ImGui::Text("%.1f fps  frame %.0f ms  render %.0f ms",
-                lastFrameMs_ > 0 ? 1000.0 / lastFrameMs_ : 0.0, lastFrameMs_, lastRenderMs_);
-    ImGui::Text("%s  planes x%.3g  %s%s", isInteracting() ? "interactive" : "still",
-                quality_.scale(), navigation_->isOrthographic() ? "ortho" : "perspective",
-                options_.antialias == Antialias::Multisample   ? "  AA msaa 4x"
-                : options_.antialias == Antialias::Supersample ? "  AA 2x2"
-                                                               : "");
-    if (ImGui::Button("view all")) navigation_->viewAll(sceneBox());
-    ImGui::SameLine();
-    if (ImGui::Button("home")) navigation_->goHome();
-    ImGui::SameLine();
-    if (ImGui::Button(navigation_->isOrthographic() ? "perspective" : "ortho"))
-        navigation_->toggleProjection();
-    ImGui::SameLine();
-    int aa = int(options_.antialias);
-    ImGui::SetNextItemWidth(90.0f);
-    if (ImGui::Combo("AA", &aa,
-                     "off\0msaa 4x\0"
-                     "2x2\0"))
-        options_.antialias = Antialias(aa);
-    if (ImGui::Button(seekMode_ ? "seek: click a point" : "seek")) seekMode_ = !seekMode_;
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!history_.canUndo());
-    if (ImGui::Button("undo")) history_.undo();
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!history_.canRedo());
-    if (ImGui::Button("redo")) history_.redo();
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (ImGui::Button("save")) saveScene(options_.scenePath);
-    const bool manipulable =
-        selected_ &&
-        (selected_->isA<ClipPlane>() || selected_->isA<BoxClip>() || selected_->isA<Transform>());
-    ImGui::BeginDisabled(!manipulable);
-    bool attached = false;
-    for (const Attached& a : manipulators_)
-        attached |= a.manipulator->original() == selected_.get();
-    if (ImGui::Button(attached ? "remove manipulator (m)" : "manipulate (m)")) toggleManipulator();
-    ImGui::EndDisabled();
-    drawViewControls();
-    if (!statusText_.empty()) ImGui::TextWrapped("%s", statusText_.c_str());
-    ImGui::Separator();
-    drawSceneTree(*root_, 0);
-    ImGui::End();
-
-    if (showFields_) {
-        ImGui::SetNextWindowPos(ImVec2(0, h * 0.45f), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(left, h * 0.55f), ImGuiCond_FirstUseEver);
-        ImGui::Begin("Fields", &showFields_);
-        drawFieldPanel(fieldPanel_, fieldPanelState_);
-        ImGui::End();
-    }
-    if (showTf_) {
-        ImGui::SetNextWindowPos(ImVec2(w - right, 0), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(right, tfHeight), ImGuiCond_FirstUseEver);
-        ImGui::Begin("Transfer function", &showTf_);
-        drawTransferFunctionPanel(tfEditor_, tfPanel_);
-        canvases_["tf"] = {glm::vec2(tfPanel_.canvas.rectMin.x, tfPanel_.canvas.rectMin.y),
-                           glm::vec2(tfPanel_.canvas.rectMax.x, tfPanel_.canvas.rectMax.y)};
-        ImGui::End();
-    } else {
-        canvases_.erase("tf");
-    }
-    if (showPlane_) {
-        ImGui::SetNextWindowPos(ImVec2(w - right, tfHeight), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(right, planeHeight), ImGuiCond_FirstUseEver);
-        ImGui::Begin("Plane opacity", &showPlane_);
-        drawPlaneOpacityPanel(planeEditor_, planePanel_);
-        canvases_["planeOpacity"] = {glm::vec2(planePanel_.rectMin.x, planePanel_.rectMin.y),
-                                     glm::vec2(planePanel_.rectMax.x, planePanel_.rectMax.y)};
-        ImGui::End();
-    } else {
-        canvases_.erase("planeOpacity");
-    }
-    if (seriesPanel_.active()) { // the time series' player, under the Scene panel
-        ImGui::SetNextWindowPos(ImVec2(0, h * 0.45f), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(left, 150.0f), ImGuiCond_FirstUseEver);
-        seriesPanel_.draw(glfwGetTime());
-    }
-    if (showMaterial_) {
-        const float top = tfHeight + planeHeight;
-        ImGui::SetNextWindowPos(ImVec2(w - right, top), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(right, std::max(h - top, 120.0f)), ImGuiCond_FirstUseEver);
-        ImGui::Begin("Material", &showMaterial_);
-        drawMaterialPanel(materialEditor_);
-        ImGui::End();
-    }
-    if (showRegion_) {
-        ImGui::SetNextWindowPos(ImVec2(left, h - 200.0f), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(std::min(320.0f, w - left - right), 200.0f),
-                                 ImGuiCond_FirstUseEver);
-        ImGui::Begin("Cursor", &showRegion_);
-        if (drawRegionHistogramPanel(region_, regionPanel_)) updateRegion();
-        ImGui::End();
-    }
-}
-
-void Viewer::drawViewControls() {
-    int layout = int(options_.layout);
-    if (ImGui::Combo("layout (l)", &layout, "single view\0four views\0"))
-        setLayout(ViewLayout(layout));
-    int navigation = int(options_.navigation);
-    if (ImGui::Combo("navigation (e f w)", &navigation, "examiner\0fly\0walk\0"))
-        setNavigationMode(NavigationMode(navigation));
-    int stereo = int(options_.stereo.mode);
-    if (ImGui::Combo("stereo (t)", &stereo, "off\0red-cyan anaglyph\0side by side\0"))
-        options_.stereo.mode = StereoMode(stereo);
-    if (options_.stereo.mode != StereoMode::Off) {
-        float fraction = float(options_.stereo.separationFraction);
-        if (ImGui::SliderFloat("eye separation", &fraction, 0.005f, 0.2f, "%.3f x focal"))
-            options_.stereo.separationFraction = double(fraction);
-    }
 }
 
 } // namespace volsg

@@ -38,6 +38,7 @@
 #include "SeriesPanel.h"
 #include "ViewModes.h"
 #include "ViewerScript.h"
+#include "WindowLayout.h"
 
 namespace volsg {
 
@@ -74,14 +75,20 @@ public:
     void onKey(int key, int mods);
 
 private:
-    enum class Drag { None, Pending, Rotate, Pan, Dolly, Manipulator, ActiveObject, Walk, Tilt };
-    /// A view's place in the window: pixels, origin top-left.
-    struct ViewRect {
-        int x = 0, y = 0, width = 1, height = 1;
-        bool contains(const glm::dvec2& p) const {
-            return p.x >= x && p.y >= y && p.x < x + width && p.y < y + height;
-        }
+    enum class Drag {
+        None,
+        Pending,
+        Rotate,
+        Pan,
+        Dolly,
+        Manipulator,
+        ActiveObject,
+        Walk,
+        Tilt,
+        SectionPending, ///< pressed in a section view: a click (cursor) or window/level
+        WindowLevel,
     };
+    using ViewRect = PixelRect;       ///< a view's place in the window (WindowLayout)
     static constexpr int kView3D = 0; ///< views: 0 the 3D view, 1 + SectionViews::Section
     struct Attached {
         ref_ptr<Node> node; ///< the manipulator
@@ -110,6 +117,8 @@ private:
     void detachAll();
     void reattach(const std::vector<ref_ptr<Node>>& originals);
     void syncManipulators();
+    /// Where the panel column and the views are this frame (WindowLayout).
+    WindowLayout layout() const;
     ViewRect viewRect(int view) const;
     int viewAt(const glm::dvec2& pixel) const; ///< -1 outside every view
     void renderViews();
@@ -129,6 +138,10 @@ private:
     void setCursorFromPick(const Ray& ray);
     void updateRegion();
     void drawPanels();
+    /// A collapsible section of the panel column; opens (and scrolls to) it when the script
+    /// asked for `scriptName`. Returns whether it is open.
+    bool panelSection(const char* title, bool& open, const char* scriptName);
+    void drawScenePanel();
     void drawViewControls();
     void drawSceneTree(Node& node, int depth);
     void saveScene(const std::string& path);
@@ -170,6 +183,7 @@ private:
     ref_ptr<Node> selected_;
     Drag drag_ = Drag::None;
     int dragButton_ = -1;
+    int dragView_ = 0; ///< the view the drag started in
     Manipulator* draggedManipulator_ = nullptr;
     glm::dvec2 mouse_{0.0}, dragStart_{0.0}, lastMouse_{0.0};
     bool buttons_[3] = {false, false, false};
@@ -194,8 +208,11 @@ private:
     double lastRenderMs_ = 0.0;
     std::string statusText_;
     std::map<std::string, std::pair<glm::vec2, glm::vec2>> canvases_; ///< scripted UI places
-    bool showTf_ = true, showPlane_ = true, showMaterial_ = true, showFields_ = true,
-         showRegion_ = true;
+    /// Which sections of the panel column are open; `revealPanel_` names one the script opened
+    /// (it is opened and scrolled into view on the next frame).
+    bool showScene_ = true, showTf_ = true, showPlane_ = false, showMaterial_ = false,
+         showFields_ = false, showRegion_ = false;
+    std::string revealPanel_;
     int screenshotCount_ = 0;
 };
 
