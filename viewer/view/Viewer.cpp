@@ -593,46 +593,6 @@ void Viewer::updateRegion() {
         RegionHistogram::of(sections_.grid(), sections_.cursor(), regionPanel_.regionSize, range);
 }
 
-void Viewer::drawViewOverlays() {
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const bool four = options_.layout == ViewLayout::Four && sections_.valid();
-    const ImU32 cross = IM_COL32(255, 220, 0, 200), label = IM_COL32(230, 230, 230, 255);
-    if (four) {
-        const glm::dvec3 cursor = sections_.worldOf(sections_.cursor());
-        for (int s = 0; s < 3; ++s) {
-            const ViewRect r = viewRect(1 + s);
-            const glm::dvec2 p = sections_.pixelOf(s, cursor, r.width, r.height);
-            const float x = float(r.x + p.x), y = float(r.y + p.y);
-            draw->PushClipRect(ImVec2(float(r.x), float(r.y)),
-                               ImVec2(float(r.x + r.width), float(r.y + r.height)), true);
-            draw->AddLine(ImVec2(float(r.x), y), ImVec2(float(r.x + r.width), y), cross);
-            draw->AddLine(ImVec2(x, float(r.y)), ImVec2(x, float(r.y + r.height)), cross);
-            const std::string text = std::string(SectionViews::name(s)) + "  slice " +
-                                     std::to_string(sections_.cursor()[s]);
-            draw->AddText(ImVec2(float(r.x + 6), float(r.y + r.height - 20)), label, text.c_str());
-            draw->PopClipRect();
-        }
-    }
-    if (cursorSet_) { // the cursor point in the 3D view
-        const ViewRect r = viewRect(kView3D);
-        const Camera& c = navigation_->camera();
-        const glm::dvec4 clip = c.projectionMatrix(navigation_->aspect()) * c.viewMatrix() *
-                                glm::dvec4(sections_.worldOf(sections_.cursor()), 1.0);
-        if (clip.w > 0.0) {
-            const ImVec2 p(float(r.x + (clip.x / clip.w + 1.0) * 0.5 * r.width),
-                           float(r.y + (1.0 - clip.y / clip.w) * 0.5 * r.height));
-            draw->AddCircle(p, 6.0f, cross, 12, 2.0f);
-        }
-    }
-    std::string mode = navigationModeName(options_.navigation);
-    if (fly_) mode += "  speed " + std::to_string(fly_->speed()).substr(0, 5);
-    if (options_.stereo.mode != StereoMode::Off)
-        mode += std::string("  stereo ") + stereoModeName(options_.stereo.mode);
-    const ViewRect r = viewRect(kView3D);
-    draw->AddText(ImVec2(float(r.x + r.width) * 0.5f - 60.0f, float(r.y + r.height - 20)), label,
-                  mode.c_str());
-}
-
 // ---- manipulators ---------------------------------------------------------------------------
 
 void Viewer::toggleManipulator() {
@@ -912,6 +872,24 @@ void Viewer::runScriptStep() {
             regionPanel_.regionSize = s.voxel.x;
             updateRegion();
             break;
+        case K::View:
+            setAnatomicalView(*parseAnatomicalView(s.text));
+            break;
+        case K::Sections:
+            sections_.setFlipped(s.text == "neurological");
+            break;
+        case K::Axes:
+            setPatientAxes(PatientAxes{glm::dvec3(s.voxel)});
+            break;
+        case K::Preset: {
+            const TransferFunctionPreset* preset = nullptr;
+            for (const TransferFunctionPreset& p : transferFunctionPresets())
+                if (p.name == s.text) preset = &p;
+            if (!preset) throw Error("no transfer-function preset named '" + s.text + "'");
+            if (!tfEditor_.selected()) throw Error("the scene has no TransferFunction");
+            tfEditor_.applyPreset(*preset, PresetApply(s.frames));
+            break;
+        }
         case K::SeriesStep:
         case K::SeriesPlay:
         case K::SeriesPause:

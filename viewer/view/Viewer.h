@@ -34,11 +34,14 @@
 #include <volsg/render/StereoRenderer.h>
 
 #include "InteractiveQuality.h"
+#include "PatientOrientation.h"
 #include "SectionViews.h"
 #include "SeriesPanel.h"
 #include "ViewModes.h"
 #include "ViewerScript.h"
 #include "WindowLayout.h"
+
+struct ImDrawList;
 
 namespace volsg {
 
@@ -129,6 +132,16 @@ private:
                         bool stereo);
     void drawImageIntoRect(const Image& image, const ViewRect& rect);
     void drawViewOverlays();
+    void drawAxesMarker(ImDrawList* draw, const ViewRect& view);
+    void drawScaleBar(ImDrawList* draw, const ViewRect& view);
+    /// The 3D view's world units per pixel at the camera's focal distance.
+    double worldUnitsPerPixel() const;
+    /// A patient direction (RAS) in world coordinates: through the patient axes and the first
+    /// volume's model matrix.
+    glm::dvec3 patientDirectionInWorld(const glm::dvec3& ras) const;
+    /// The 3D camera looks at the scene from that side of the patient (view all).
+    void setAnatomicalView(AnatomicalView view);
+    void setPatientAxes(const PatientAxes& axes);
     void setLayout(ViewLayout layout);
     void setNavigationMode(NavigationMode mode);
     void stepNavigation();
@@ -143,6 +156,7 @@ private:
     bool panelSection(const char* title, bool& open, const char* scriptName);
     void drawScenePanel();
     void drawViewControls();
+    void drawOrientationControls();
     void drawSceneTree(Node& node, int depth);
     void saveScene(const std::string& path);
     void writeViewToSceneCamera();
@@ -207,6 +221,8 @@ private:
     double lastFrameMs_ = 0.0;
     double lastRenderMs_ = 0.0;
     std::string statusText_;
+    std::string progressText_; ///< shown in the 3D view while loading or refining
+    PatientAxes patientAxes_;  ///< how the first volume's axes run in patient coordinates
     std::map<std::string, std::pair<glm::vec2, glm::vec2>> canvases_; ///< scripted UI places
     /// Which sections of the panel column are open; `revealPanel_` names one the script opened
     /// (it is opened and scrolled into view on the next frame).

@@ -137,11 +137,40 @@ void Viewer::drawScenePanel() {
     if (ImGui::Button(attached ? "remove manipulator (m)" : "manipulate (m)")) toggleManipulator();
     ImGui::EndDisabled();
     drawViewControls();
+    drawOrientationControls();
     if (!statusText_.empty()) ImGui::TextWrapped("%s", statusText_.c_str());
     if (ImGui::TreeNodeEx("scene graph", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawSceneTree(*root_, 0);
         ImGui::TreePop();
     }
+}
+
+void Viewer::drawOrientationControls() {
+    // The 3D view from each side of the patient (A P L R S I), the section views' convention,
+    // and how the volume's axes run when its file does not say (PatientOrientation.h).
+    ImGui::TextUnformatted("view from");
+    static const char* labels[kAnatomicalViewCount] = {"A", "P", "L", "R", "S", "I"};
+    for (int v = 0; v < kAnatomicalViewCount; ++v) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton(labels[v])) setAnatomicalView(AnatomicalView(v));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s view", anatomicalViewName(AnatomicalView(v)));
+    }
+    bool flipped = sections_.flipped();
+    if (ImGui::Checkbox("sections flipped (neurological)", &flipped)) sections_.setFlipped(flipped);
+    ImGui::TextUnformatted("volume axes reversed");
+    PatientAxes axes = patientAxes_;
+    bool changed = false;
+    for (int a = 0; a < 3; ++a) {
+        ImGui::SameLine();
+        bool reversed = axes.signs[a] < 0.0;
+        const char* name[3] = {"x##axis", "y##axis", "z##axis"};
+        if (ImGui::Checkbox(name[a], &reversed)) {
+            axes.signs[a] = reversed ? -1.0 : 1.0;
+            changed = true;
+        }
+    }
+    if (changed) setPatientAxes(axes);
 }
 
 void Viewer::drawViewControls() {
