@@ -87,6 +87,7 @@ Viewer::Viewer(ViewerOptions options) : options_(std::move(options)) {
     if (!options_.scriptPath.empty())
         script_ = parseViewerScript(readText(options_.scriptPath), options_.scriptPath);
     root_ = readSceneOrVoxelFile(options_.scenePath);
+    takeSceneText();
     sceneTime_ = std::filesystem::last_write_time(options_.scenePath);
 
     GlfwWindowOptions windowOptions;
@@ -310,7 +311,8 @@ void Viewer::handleSceneEvents() {
                     toggleManipulator();
                     break;
                 case GLFW_KEY_P:
-                    screenshot("volsg-view-" + std::to_string(++screenshotCount_) + ".png", false);
+                    screenshot(uniqueScreenshotName(std::filesystem::current_path().string()),
+                               false);
                     break;
                 case GLFW_KEY_F1:
                     options_.panels = !options_.panels;
@@ -657,48 +659,6 @@ void Viewer::reattach(const std::vector<ref_ptr<Node>>& originals) {
 
 // ---- saving, screenshots, reloading ---------------------------------------------------------
 
-void Viewer::writeViewToSceneCamera() {
-    const auto cameras = findAll(*root_, Camera::classType());
-    if (cameras.empty()) return;
-    const SceneCamera scene = findOrMakeCamera(*root_, 1.0);
-    Camera& target = *scene.camera;
-    const Camera& view = navigation_->camera();
-    // World pose back into the camera's own coordinates (a rigid model matrix above it).
-    const glm::dmat4 toLocal = glm::inverse(scene.model);
-    const glm::dmat3 m(toLocal);
-    const glm::dquat turn = glm::quat_cast(
-        glm::dmat3(glm::normalize(m[0]), glm::normalize(m[1]), glm::normalize(m[2])));
-    target.position = glm::vec3(toLocal * glm::dvec4(glm::dvec3(view.position()), 1.0));
-    target.orientation = rotationFromQuat(turn * view.orientation().quat());
-    target.focalDistance = view.focalDistance();
-    target.nearDistance = view.nearDistance();
-    target.farDistance = view.farDistance();
-    if (auto* p = dynamic_cast<PerspectiveCamera*>(&target))
-        if (auto* v = dynamic_cast<const PerspectiveCamera*>(&view))
-            p->heightAngle = v->heightAngle();
-    if (auto* o = dynamic_cast<OrthographicCamera*>(&target))
-        if (auto* v = dynamic_cast<const OrthographicCamera*>(&view)) o->height = v->height();
-}
-
-void Viewer::saveScene(const std::string& path) {
-    std::vector<ref_ptr<Node>> originals;
-    for (Attached& a : manipulators_)
-        originals.emplace_back(a.manipulator->original());
-    detachAll(); // the file holds the plain nodes, as Inventor's manipulators leave them
-    try {
-        writeViewToSceneCamera();
-        writeSceneToFile(path, *root_);
-        status("saved " + path);
-    } catch (const Error& e) {
-        status(std::string("saving failed: ") + e.what());
-        exitStatus_ = 1;
-    }
-    reattach(originals);
-    std::error_code ec;
-    if (std::filesystem::equivalent(path, options_.scenePath, ec))
-        sceneTime_ = std::filesystem::last_write_time(options_.scenePath, ec);
-}
-
 void Viewer::screenshot(const std::string& path, bool sceneOnly) {
     const glm::ivec2 size = window_->size();
     Image image;
@@ -743,7 +703,9 @@ void Viewer::screenshot(const std::string& path, bool sceneOnly) {
     }
     try {
         writePng(path, image);
-        status("screenshot " + path);
+        std::error_code ec;
+        const auto where = std::filesystem::absolute(path, ec);
+        status("screenshot saved to " + (ec ? path : where.string()));
     } catch (const Error& e) {
         status(std::string("screenshot failed: ") + e.what());
         exitStatus_ = 1;
@@ -762,6 +724,7 @@ void Viewer::checkReload() {
         ref_ptr<Node> fresh = readSceneOrVoxelFile(options_.scenePath);
         detachAll();
         root_ = fresh;
+        takeSceneText();
         loadScene();
         status("reloaded " + options_.scenePath);
     } catch (const Error& e) {

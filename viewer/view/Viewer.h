@@ -35,6 +35,7 @@
 
 #include "InteractiveQuality.h"
 #include "PatientOrientation.h"
+#include "SceneTextSave.h"
 #include "SectionViews.h"
 #include "SeriesPanel.h"
 #include "ViewModes.h"
@@ -47,6 +48,10 @@ namespace volsg {
 
 class GlfwWindow;
 class Renderer;
+
+/// `volsg-view-N.png` in `folder` with N the first number whose file does not exist: a
+/// screenshot never overwrites one.
+std::string uniqueScreenshotName(const std::string& folder);
 
 struct ViewerOptions {
     std::string scenePath;
@@ -158,8 +163,13 @@ private:
     void drawViewControls();
     void drawOrientationControls();
     void drawSceneTree(Node& node, int depth);
+    /// Saves to `path` (the scene's own file, or another: Save As, after which saves go there):
+    /// only the changed parts of the file's text are rewritten (SceneTextSave.h), else the
+    /// whole scene; the view goes into the scene's first camera, or a new one.
     void saveScene(const std::string& path);
     void writeViewToSceneCamera();
+    /// The snapshot of the scene file's text, taken when it is read (and after each save).
+    void takeSceneText();
     void screenshot(const std::string& path, bool sceneOnly);
     void checkReload();
     Box3 sceneBox();
@@ -229,7 +239,8 @@ private:
     bool showScene_ = true, showTf_ = true, showPlane_ = false, showMaterial_ = false,
          showFields_ = false, showRegion_ = false;
     std::string revealPanel_;
-    int screenshotCount_ = 0;
+    std::optional<SceneTextSnapshot> sceneText_;
+    char saveAsPath_[512] = "";
 };
 
 } // namespace volsg

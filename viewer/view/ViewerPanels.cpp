@@ -8,6 +8,8 @@
 
 #include "Viewer.h"
 
+#include <algorithm>
+
 #include <imgui.h>
 
 #include <volsg/editors/panels/MaterialPanel.h>
@@ -127,6 +129,13 @@ void Viewer::drawScenePanel() {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("save")) saveScene(options_.scenePath);
+    // Save As: a new file name (relative names from the current folder); later saves go there.
+    ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - 70.0f));
+    ImGui::InputTextWithHint("##saveas", "save as: file.iv", saveAsPath_, sizeof saveAsPath_);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(saveAsPath_[0] == '\0');
+    if (ImGui::Button("save as")) saveScene(saveAsPath_);
+    ImGui::EndDisabled();
     const bool manipulable =
         selected_ &&
         (selected_->isA<ClipPlane>() || selected_->isA<BoxClip>() || selected_->isA<Transform>());
