@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 
@@ -83,7 +84,8 @@ std::vector<Field*> textFieldsOf(Node& node) {
 
 } // namespace
 
-Viewer::Viewer(ViewerOptions options) : options_(std::move(options)) {
+Viewer::Viewer(ViewerOptions options)
+    : options_(std::move(options)), startTime_(std::chrono::steady_clock::now()) {
     if (!options_.scriptPath.empty())
         script_ = parseViewerScript(readText(options_.scriptPath), options_.scriptPath);
     root_ = readSceneOrVoxelFile(options_.scenePath);
@@ -121,6 +123,7 @@ Viewer::Viewer(ViewerOptions options) : options_(std::move(options)) {
     if (!ImGui_ImplGlfw_InitForOpenGL(w, true) || !ImGui_ImplOpenGL3_Init("#version 330 core"))
         throw Error("Dear ImGui could not start on this GL context");
 
+    showMessageFrame(loadingMessage());
     loadScene();
     setupCamera();
     setNavigationMode(options_.navigation);
@@ -140,6 +143,7 @@ Viewer::~Viewer() {
 }
 
 void Viewer::loadScene() {
+    refineStage_ = 0; // a new scene: a coarse first image, then the full one
     manipulators_.clear();
     history_.clear();
     activeDrag_.end();
@@ -909,7 +913,7 @@ void Viewer::drawImageIntoRect(const Image& image, const ViewRect& rect) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void Viewer::renderIntoRect(Node& root, RenderOptions o, const ViewRect& rect, bool antialias,
+void Viewer::renderIntoRect(Node& root, RenderOptions o, const ViewRect& rect, double scale,
                             bool stereo) {
     o.width = rect.width;
     o.height = rect.height;
@@ -919,16 +923,17 @@ void Viewer::renderIntoRect(Node& root, RenderOptions o, const ViewRect& rect, b
     }
     const glm::ivec2 windowSize = window_->size();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!antialias && rect.x == 0 && rect.y == 0 && rect.width == windowSize.x &&
+    if (scale == 1.0 && rect.x == 0 && rect.y == 0 && rect.width == windowSize.x &&
         rect.height == windowSize.y) {
         renderer_->renderToBoundFramebuffer(root, o);
         return;
     }
     // Off the window first: into a double-size target for 2x2 supersampling (the renderer
     // draws into a single-sample float target, so the window's own multisampling would not
-    // help), or just into the view's own rectangle.
-    const int scale = antialias ? 2 : 1;
-    const glm::ivec2 size(scale * rect.width, scale * rect.height);
+    // help), a smaller one for a coarse frame (scaled up with linear filtering), or just into
+    // the view's own rectangle.
+    const glm::ivec2 size = glm::max(
+        glm::ivec2(glm::round(scale * glm::dvec2(rect.width, rect.height))), glm::ivec2(1));
     if (size != viewTargetSize_) {
         viewColor_ = Renderbuffer(GL_RGBA8, size.x, size.y);
         viewTarget_ = Framebuffer::create();
@@ -953,8 +958,19 @@ void Viewer::renderViews() {
     RenderOptions o;
     o.background = options_.background;
     o.interactive = isInteracting();
-    o.interactivePlaneScale = quality_.scale();
+    o.interactivePlaneScale = quality_.planeScale();
     o.camera = navigation_->cameraPtr();
+    // The 3D view's resolution: a quarter of it (and the interactive planes) for the first
+    // image of a scene, the interactive rule's while the user drags, else full (or twice,
+    // supersampled).
+    double resolution = options_.antialias == Antialias::Supersample ? 2.0 : 1.0;
+    if (refineStage_ == 0) {
+        resolution = kFirstImageResolution;
+        o.interactive = true;
+        o.interactivePlaneScale = 1.0;
+    } else if (o.interactive) {
+        resolution = quality_.resolutionScale();
+    }
     const bool four = options_.layout == ViewLayout::Four && sections_.valid();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     { // under the panel column (and the seams between views, if any): nothing stale shows
@@ -969,14 +985,13 @@ void Viewer::renderViews() {
     try {
         RenderOptions view3D = o;
         if (options_.antialias == Antialias::Multisample) view3D.samples = 4;
-        renderIntoRect(*root_, view3D, viewRect(kView3D),
-                       options_.antialias == Antialias::Supersample, true);
+        renderIntoRect(*root_, view3D, viewRect(kView3D), resolution, true);
         if (four)
             for (int s = 0; s < 3; ++s) {
                 const ViewRect r = viewRect(1 + s);
                 RenderOptions section = o;
                 section.camera = sections_.camera(s, double(r.width) / double(r.height));
-                renderIntoRect(sections_.graph(s), section, r, false, false);
+                renderIntoRect(sections_.graph(s), section, r, 1.0, false);
             }
     } catch (...) {
         renderer_->endViewGroup();
@@ -1019,7 +1034,10 @@ void Viewer::frame() {
     events_.clear();
     seriesPanel_.update(glfwGetTime());
     followSceneEdits();
+    tfPanel_.deferHistogram = refineStage_ == 0; // the first image before the histogram
     if (options_.panels) drawPanels();
+    progressText_ = refineStage_ == 0 ? "first image at a quarter of the resolution: refining..."
+                                      : std::string();
     drawViewOverlays();
     stepNavigation();
     syncManipulators();
@@ -1045,6 +1063,19 @@ void Viewer::frame() {
     if (step && step->kind == ScriptStep::Kind::Save) saveScene(step->text);
     if (step && step->kind == ScriptStep::Kind::Quit) quit_ = true;
     window_->swapBuffers();
+    if (refineStage_ < 2) { // how long the first image and the full one took to show
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - startTime_)
+                .count();
+        // And the processor time the process used (all threads): on a machine shared with
+        // other work, the wall time overstates what an idle one takes.
+        const double cpuMs = 1000.0 * double(std::clock()) / CLOCKS_PER_SEC;
+        char text[128];
+        std::snprintf(text, sizeof text, "%s image after %.0f ms (processor time %.0f ms)",
+                      refineStage_ == 0 ? "first (coarse)" : "full", ms, cpuMs);
+        status(text);
+        ++refineStage_;
+    }
 
     lastFrameMs_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -112,6 +112,10 @@ private:
     };
 
     void loadScene();
+    /// One frame with `message` in the middle of the window (before the scene can be drawn).
+    void showMessageFrame(const std::string& message);
+    /// "loading FILE (N MB)..." for the scene's volume files.
+    std::string loadingMessage() const;
     void setupCamera();
     void frame();
     void runScriptStep();
@@ -130,10 +134,10 @@ private:
     ViewRect viewRect(int view) const;
     int viewAt(const glm::dvec2& pixel) const; ///< -1 outside every view
     void renderViews();
-    /// Renders `root` seen by options.camera into `rect` of the window (supersampled when
-    /// `antialias`, else as options.samples says); the 3D view goes through the stereo renderer
-    /// when stereo is on.
-    void renderIntoRect(Node& root, RenderOptions options, const ViewRect& rect, bool antialias,
+    /// Renders `root` seen by options.camera into `rect` of the window at `scale` times its size
+    /// (2: 2x2 supersampling; below 1: a coarse frame scaled up), multisampled as
+    /// options.samples says; the 3D view goes through the stereo renderer when stereo is on.
+    void renderIntoRect(Node& root, RenderOptions options, const ViewRect& rect, double scale,
                         bool stereo);
     void drawImageIntoRect(const Image& image, const ViewRect& rect);
     void drawViewOverlays();
@@ -232,7 +236,12 @@ private:
     double lastRenderMs_ = 0.0;
     std::string statusText_;
     std::string progressText_; ///< shown in the 3D view while loading or refining
-    PatientAxes patientAxes_;  ///< how the first volume's axes run in patient coordinates
+    /// The first image of a scene is drawn at this fraction of the 3D view's width and height
+    /// (with the volumes' interactive planes), the next one in full.
+    static constexpr double kFirstImageResolution = 0.25;
+    int refineStage_ = 0; ///< frames since the scene was loaded, up to 2
+    std::chrono::steady_clock::time_point startTime_;
+    PatientAxes patientAxes_; ///< how the first volume's axes run in patient coordinates
     std::map<std::string, std::pair<glm::vec2, glm::vec2>> canvases_; ///< scripted UI places
     /// Which sections of the panel column are open; `revealPanel_` names one the script opened
     /// (it is opened and scrolled into view on the next frame).

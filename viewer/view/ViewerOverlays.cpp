@@ -11,10 +11,14 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
 #include <volsg/actions/SearchAction.h>
+#include <volsg/context/GlfwWindow.h>
 #include <volsg/editors/ValueAxis.h>
 #include <volsg/manipulators/DragMath.h>
 #include <volsg/nodes/Camera.h>
@@ -180,6 +184,43 @@ void Viewer::setAnatomicalView(AnatomicalView view) {
 void Viewer::setPatientAxes(const PatientAxes& axes) {
     patientAxes_ = axes;
     sections_.setPatientAxes(axes);
+}
+
+std::string Viewer::loadingMessage() const {
+    std::string files;
+    for (Node* n : findAll(*root_, VolumeData::classType())) {
+        const auto& data = static_cast<const VolumeData&>(*n);
+        if (data.fileName().empty()) continue;
+        std::error_code ec;
+        std::filesystem::path path(data.fileName()); // relative names: from the scene's folder
+        if (path.is_relative())
+            path = std::filesystem::path(options_.scenePath).parent_path() / path;
+        const auto bytes = std::filesystem::file_size(path, ec);
+        char size[48] = "";
+        if (!ec) std::snprintf(size, sizeof size, " (%.1f MB)", double(bytes) / 1048576.0);
+        files += (files.empty() ? "" : ", ") +
+                 std::filesystem::path(data.fileName()).filename().string() + size;
+    }
+    return files.empty() ? "loading the scene..." : "loading " + files + "...";
+}
+
+void Viewer::showMessageFrame(const std::string& message) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const ImVec2 size = ImGui::CalcTextSize(message.c_str());
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    draw->AddText(ImVec2(0.5f * (display.x - size.x), 0.5f * (display.y - size.y)),
+                  IM_COL32(230, 230, 230, 255), message.c_str());
+    ImGui::Render();
+    const glm::ivec2 window = window_->size();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, window.x, window.y);
+    glClearColor(options_.background.r, options_.background.g, options_.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    window_->swapBuffers();
 }
 
 } // namespace volsg

@@ -140,7 +140,9 @@ bool drawTransferFunctionPanel(TransferFunctionEditor& editor, TransferFunctionP
     std::vector<ImU32> colors;
     for (std::size_t i = 0; i < editor.curves().fields().size(); ++i)
         colors.push_back(channelColor(editor.channelOfField(i)));
-    const std::vector<float> heights = editor.histogram().heights(state.logHistogram);
+    const std::vector<float> heights = state.deferHistogram
+                                           ? std::vector<float>{}
+                                           : editor.histogram().heights(state.logHistogram);
     const float width = std::max(ImGui::GetContentRegionAvail().x, 120.0f);
     edited |= drawCurveCanvas("##tf", editor.curves(), state.canvas, ImVec2(width, 150.0f), colors,
                               &heights);

@@ -15,6 +15,9 @@ struct TransferFunctionPanelState {
     bool logHistogram = true;
     int preset = 0;
     int presetApply = 1; ///< PresetApply: opacity alone unless the user asks for more
+    /// Draw without the histogram this frame (it needs a pass over the data): the viewer's
+    /// first image comes first.
+    bool deferHistogram = false;
 };
 
 /// Draws the panel's contents into the current window; returns whether anything was edited.
