@@ -108,6 +108,19 @@ TEST_CASE("a CT preset lands on the same Hounsfield values whatever the data ran
     }
 }
 
+TEST_CASE("CT stored unsigned: the presets move by the data value of 0 HU") {
+    const TransferFunctionPreset& bone = presetNamed("CT bone");
+    // Data 0 .. 4095 holding HU + 1024: 300 HU is the value 1324, v = 1324 / 4095.
+    const auto alpha = presetChannelInV(bone, 3, {0, 4095}, {0, 4095}, 1024.0);
+    TransferFunction1D f;
+    f.setChannel(TransferFunction1D::Alpha, asPoints(alpha));
+    CHECK(f.evaluate(TransferFunction1D::Alpha, 1324.0 / 4095.0) ==
+          doctest::Approx(presetAt(bone, 3, 300.0)).epsilon(1e-5));
+    CHECK(f.evaluate(TransferFunction1D::Alpha, 1064.0 / 4095.0) < 0.01); // 40 HU: soft tissue
+    // A non-finite zero is taken as 0.
+    CHECK(presetDataValue(bone, 300.0f, {0, 1}, {0, 1}, std::nan("")) == 300.0);
+}
+
 TEST_CASE("an MR preset is placed by fractions of the data's actual range") {
     const TransferFunctionPreset& t1 = presetNamed("MR T1 brain");
     // Data 100 .. 1100, function range 0 .. 2000: fraction 0.45 is value 550, v = 0.275.

@@ -848,6 +848,9 @@ void Viewer::runScriptStep() {
         case K::Axes:
             setPatientAxes(PatientAxes{glm::dvec3(s.voxel)});
             break;
+        case K::Hounsfield:
+            tfEditor_.setHounsfieldZero(s.scroll);
+            break;
         case K::Preset: {
             const TransferFunctionPreset* preset = nullptr;
             for (const TransferFunctionPreset& p : transferFunctionPresets())

@@ -39,7 +39,11 @@ char patientLetter(const glm::dvec3& d) {
 void drawLetter(ImDrawList* draw, ImVec2 at, char letter, ImU32 colour) {
     const char text[2] = {letter, '\0'};
     const ImVec2 size = ImGui::CalcTextSize(text);
-    draw->AddText(ImVec2(at.x - 0.5f * size.x, at.y - 0.5f * size.y), colour, text);
+    const ImVec2 corner(at.x - 0.5f * size.x, at.y - 0.5f * size.y);
+    // A dark outline keeps the letter legible on any image.
+    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
+        draw->AddText(ImVec2(corner.x + d.x, corner.y + d.y), IM_COL32(0, 0, 0, 220), text);
+    draw->AddText(corner, colour, text);
 }
 
 } // namespace

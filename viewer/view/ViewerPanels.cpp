@@ -183,6 +183,7 @@ void Viewer::drawOrientationControls() {
 }
 
 void Viewer::drawViewControls() {
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f); // room for the labels
     int layout = int(options_.layout);
     if (ImGui::Combo("layout (l)", &layout, "single view\0four views\0"))
         setLayout(ViewLayout(layout));
@@ -197,6 +198,7 @@ void Viewer::drawViewControls() {
         if (ImGui::SliderFloat("eye separation", &fraction, 0.005f, 0.2f, "%.3f x focal"))
             options_.stereo.separationFraction = double(fraction);
     }
+    ImGui::PopItemWidth();
 }
 
 } // namespace volsg

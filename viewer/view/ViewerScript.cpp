@@ -3,6 +3,7 @@
 #include "PatientOrientation.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -292,6 +293,12 @@ std::vector<ScriptStep> parseViewerScript(const std::string& text, const std::st
             s.text = r.word("a preset name");
             while (r.more())
                 s.text += " " + r.word("a preset name");
+            steps.push_back(s);
+        } else if (command == "hounsfield") {
+            s.kind = K::Hounsfield;
+            s.scroll = r.number("the data value of 0 HU");
+            if (!std::isfinite(s.scroll)) r.fail("the data value of 0 HU must be finite");
+            r.end();
             steps.push_back(s);
         } else if (command == "cursor") {
             s.kind = K::Cursor;

@@ -25,6 +25,7 @@
 //   axes SX SY SZ                   how the volume's axes run in patient coordinates: + or -
 //                                   each (- reversed; PatientOrientation.h)
 //   preset colour|opacity|both NAME the named transfer-function preset (NAME may have spaces)
+//   hounsfield VALUE                the data value of 0 HU for CT presets (1024: unsigned CT)
 //   cursor I J K                    the 3D cursor on voxel (I, J, K) of the first volume
 //   region K                        the readout's histogram region: K^3 voxels
 //   screenshot FILE [scene]         the window with its panels; `scene`: the scene alone
@@ -73,6 +74,7 @@ struct ScriptStep {
         Sections,
         Axes,
         Preset,
+        Hounsfield,
         Screenshot,
         Save,
         SeriesStep,

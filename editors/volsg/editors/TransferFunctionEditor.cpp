@@ -126,7 +126,7 @@ void TransferFunctionEditor::applyPreset(const TransferFunctionPreset& preset, P
     history_.begin("preset " + preset.name + " (" + presetApplyName(apply) + ")", changed);
     for (int i : channels) {
         MFVec2f* f = channelField(channelBits[i]);
-        const auto points = presetChannelInV(preset, i, range, minMax);
+        const auto points = presetChannelInV(preset, i, range, minMax, hounsfieldZero_);
         if (f->getValues() != points) f->setValues(points);
     }
     history_.commit();

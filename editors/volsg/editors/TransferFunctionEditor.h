@@ -51,6 +51,9 @@ public:
     /// Sets the selected function's colour channels, its opacity, or both to a preset (one
     /// undo step), mapped into v through its effective data range (TransferFunctionPresets.h).
     void applyPreset(const TransferFunctionPreset& preset, PresetApply apply);
+    /// The data value of 0 HU for CT presets (0: data in HU; 1024: CT stored unsigned).
+    void setHounsfieldZero(double value) { hounsfieldZero_ = value; }
+    double hounsfieldZero() const { return hounsfieldZero_; }
 
     /// Window/level of the selected function's data range: a drag from begin to end is one
     /// undo step; each dragTo sets dataRange from the range at the start and the drag's whole
@@ -88,6 +91,7 @@ private:
     std::size_t selected_ = 0;
     int channels_ = Alpha;
     bool windowLevelling_ = false;
+    double hounsfieldZero_ = 0.0;
     WindowLevel windowLevelStart_;
     glm::dvec2 minMax_{0.0};
     std::uint64_t minMaxVersion_ = 0;

@@ -105,10 +105,10 @@ const char* presetApplyName(PresetApply apply) {
 }
 
 double presetDataValue(const TransferFunctionPreset& preset, float x, glm::dvec2 functionRange,
-                       glm::dvec2 dataMinMax) {
+                       glm::dvec2 dataMinMax, double hounsfieldZero) {
     switch (preset.units) {
     case Units::Hounsfield:
-        return double(x);
+        return double(x) + (std::isfinite(hounsfieldZero) ? hounsfieldZero : 0.0);
     case Units::DataFraction:
         return dataMinMax.x + double(x) * (dataMinMax.y - dataMinMax.x);
     case Units::V:
@@ -118,13 +118,15 @@ double presetDataValue(const TransferFunctionPreset& preset, float x, glm::dvec2
 }
 
 std::vector<glm::vec2> presetChannelInV(const TransferFunctionPreset& preset, int channel,
-                                        glm::dvec2 functionRange, glm::dvec2 dataMinMax) {
+                                        glm::dvec2 functionRange, glm::dvec2 dataMinMax,
+                                        double hounsfieldZero) {
     const std::vector<glm::vec2>& points = preset.channels[std::size_t(std::clamp(channel, 0, 3))];
     if (preset.units == Units::V || points.empty()) return points;
     const double span = functionRange.y - functionRange.x;
     std::vector<glm::dvec2> inV;
     for (const glm::vec2& p : points) {
-        const double value = presetDataValue(preset, p.x, functionRange, dataMinMax);
+        const double value =
+            presetDataValue(preset, p.x, functionRange, dataMinMax, hounsfieldZero);
         inV.emplace_back(span != 0.0 ? (value - functionRange.x) / span : 0.0, double(p.y));
     }
     if (span < 0.0) std::reverse(inV.begin(), inV.end()); // an inverted range

@@ -35,16 +35,19 @@ const std::vector<TransferFunctionPreset>& transferFunctionPresets();
 enum class PresetApply { Colour, Opacity, Both };
 const char* presetApplyName(PresetApply apply);
 
-/// The data value of a preset x: itself (Hounsfield), min + x (max - min) (DataFraction);
-/// for Units::V the value at v = x under `functionRange`.
+/// The data value of a preset x: x + hounsfieldZero (Hounsfield; hounsfieldZero is the data
+/// value of 0 HU: 0 for data in HU, 1024 for CT stored unsigned with DICOM's usual rescale
+/// intercept of -1024), min + x (max - min) (DataFraction); for Units::V the value at v = x
+/// under `functionRange`.
 double presetDataValue(const TransferFunctionPreset& preset, float x, glm::dvec2 functionRange,
-                       glm::dvec2 dataMinMax);
+                       glm::dvec2 dataMinMax, double hounsfieldZero = 0.0);
 
 /// Channel `channel` (0 red .. 3 alpha) of `preset` as (v, output) points for a transfer
 /// function whose dataRange is `functionRange` on data whose actual range is `dataMinMax`:
 /// v = (value - lo) / (hi - lo), the curve cut at v = 0 and v = 1 (points outside dropped, the
 /// ends interpolated; a curve wholly outside becomes its constant value there).
 std::vector<glm::vec2> presetChannelInV(const TransferFunctionPreset& preset, int channel,
-                                        glm::dvec2 functionRange, glm::dvec2 dataMinMax);
+                                        glm::dvec2 functionRange, glm::dvec2 dataMinMax,
+                                        double hounsfieldZero = 0.0);
 
 } // namespace volsg

@@ -1,6 +1,7 @@
 #include <volsg/editors/panels/TransferFunctionPanel.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -86,6 +87,12 @@ void drawPresetControls(TransferFunctionEditor& editor, TransferFunctionPanelSta
     if (ImGui::Button("apply preset")) {
         editor.applyPreset(presets[std::size_t(state.preset)], PresetApply(state.presetApply));
         edited = true;
+    }
+    if (presets[std::size_t(state.preset)].units == TransferFunctionPreset::Units::Hounsfield) {
+        double zero = editor.hounsfieldZero();
+        ImGui::SetNextItemWidth(90.0f);
+        if (ImGui::InputDouble("data value of 0 HU", &zero, 0.0, 0.0, "%g") && std::isfinite(zero))
+            editor.setHounsfieldZero(zero);
     }
     ImGui::TextUnformatted("preset sets");
     for (int a = 0; a < 3; ++a) {
