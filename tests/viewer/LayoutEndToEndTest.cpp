@@ -18,6 +18,8 @@
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/OrthoSlice.h>
 #include <volsg/nodes/TransferFunction.h>
+#include <volsg/nodes/VolumeData.h>
+#include <volsg/volume/VolumeGrid.h>
 
 #include "ViewerTestSupport.h"
 #include "view/WindowLayout.h"
@@ -78,7 +80,12 @@ TEST_CASE("panels dock in a side column that never covers a view, and clicks go 
                << "save " << file("after-axial-click.iv") << "\n"
                << "click left tf:0.5,0.8\n" // a new alpha point
                << "wait 1\n"
-               << "save " << file("after-tf-click.iv") << "\n"
+               << "save " << file("after-tf-click.iv")
+               << "\n"
+               // A left drag in a section view is window/level: 10% of the view to the right.
+               << "drag left view:sagittal:0.5,0.5 view:sagittal:0.6,0.5 4\n"
+               << "wait 1\n"
+               << "save " << file("after-section-drag.iv") << "\n"
                << "quit\n";
     }
     std::string log;
@@ -132,5 +139,16 @@ TEST_CASE("panels dock in a side column that never covers a view, and clicks go 
     CHECK(tfOf(*afterTf)->red.getValues() == tfOf(*original)->red.getValues());
     CHECK(cameraOf(*afterTf)->position() == cameraOf(*afterAxial)->position());
     CHECK(cameraOf(*afterTf)->orientation().angle == cameraOf(*afterAxial)->orientation().angle);
+    // The drag widened the function's range [0, 255] by a tenth of the data's span, about the
+    // same level, and moved no cursor plane (the scene's axial slice stayed).
+    ref_ptr<Node> afterDrag = readScene(file("after-section-drag.iv"));
+    auto* data = static_cast<VolumeData*>(findAll(*original, VolumeData::classType()).front());
+    const auto [lo, hi] = data->grid()->minMax();
+    const glm::vec2 range = tfOf(*afterDrag)->dataRange();
+    const double pixel = (hi - lo) / 448.0; // one pixel of the drag in data units
+    CHECK(std::abs((range.y - range.x) - (255.0 + 0.1 * (hi - lo))) < 2.0 * pixel);
+    CHECK(std::abs(0.5 * (range.x + range.y) - 127.5) < 1e-3);
+    auto sliceOf = [](Node& root) { return static_cast<OrthoSlice*>(findByName(root, "sliceZ")); };
+    CHECK(sliceOf(*afterDrag)->sliceNumber() == sliceOf(*afterTf)->sliceNumber());
     fs::remove_all(dir);
 }

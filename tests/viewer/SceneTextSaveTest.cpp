@@ -152,3 +152,32 @@ TEST_CASE("structural changes and unpatchable files are refused with a reason") 
     CHECK_FALSE(oldSnapshot.patched(*old, reason));
     CHECK(reason.find("V2.1") != std::string::npos);
 }
+
+TEST_CASE("a snapshot of text that does not match its graph refuses, never crashes") {
+    // Every truncation of the file and every byte replaced by a brace, quote, bracket or '#'
+    // against the graph read from the whole file: take() and patched() return (a refusal or a
+    // text), and a text they return reads back.
+    auto root = readSceneFromString(kText);
+    int refused = 0, patchedOk = 0;
+    auto attempt = [&](const std::string& text) {
+        const SceneTextSnapshot snapshot = SceneTextSnapshot::take(text, *root);
+        std::string reason;
+        const auto out = snapshot.patched(*root, reason);
+        if (!out) {
+            CHECK(!reason.empty());
+            ++refused;
+        } else {
+            ++patchedOk;
+        }
+    };
+    for (std::size_t n = 0; n < kText.size(); ++n)
+        attempt(kText.substr(0, n));
+    for (std::size_t i = 0; i < kText.size(); ++i)
+        for (const char c : {'{', '}', '"', '[', '#', '\\'}) {
+            std::string text = kText;
+            text[i] = c;
+            attempt(text);
+        }
+    CHECK(refused > 0);
+    CHECK(patchedOk > 0); // bytes inside comments change nothing that matters
+}
