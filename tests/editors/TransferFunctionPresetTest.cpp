@@ -211,6 +211,21 @@ TEST_CASE("a window/level drag rescales the function's data range as one undo st
     CHECK(tf.dataRange() == glm::vec2(-1024, 3071));
 }
 
+TEST_CASE("the histogram follows the range, once a window/level drag ends") {
+    EditHistory history;
+    TransferFunctionEditor editor(history);
+    ref_ptr<Node> root = readSceneFromString(ctScene);
+    editor.setScene(root.get());
+    // RAMP16 (0 .. 65535 along x) over [-1024, 3071]: all but the x = 0 column clamp into the
+    // top bin.
+    const std::uint64_t top = editor.histogram().counts.back();
+    editor.beginWindowLevel();
+    editor.dragWindowLevel({100, 0}, {100, 100});   // the range now spans the whole data
+    CHECK(editor.histogram().counts.back() == top); // not redone during the drag
+    editor.endWindowLevel();
+    CHECK(editor.histogram().counts.back() < top); // redone after it
+}
+
 TEST_CASE("the readout gives the data value, colour and opacity at v") {
     EditHistory history;
     TransferFunctionEditor editor(history);

@@ -207,6 +207,9 @@ const Histogram& TransferFunctionEditor::histogram() {
     const std::uint64_t version = data_ ? data_->version() : 0;
     if (histogramValid_ && range == histogramRange_ && version == histogramDataVersion_)
         return histogram_;
+    // A window/level drag changes the range every frame: the histogram (a pass over the data)
+    // is redone when the drag ends, not for each step.
+    if (histogramValid_ && windowLevelling_ && version == histogramDataVersion_) return histogram_;
     histogram_ = Histogram{};
     histogramRange_ = range;
     histogramDataVersion_ = version;

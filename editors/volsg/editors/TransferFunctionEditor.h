@@ -73,7 +73,8 @@ public:
     Readout readout(double v) const;
 
     /// The histogram of the scene's volume under the selected function's data range
-    /// (recomputed when that range or the data changes).
+    /// (recomputed when that range or the data changes; during a window/level drag, once it
+    /// ends).
     const Histogram& histogram();
     /// The data range the selected function maps to [0, 1]: dataRange when it is set, else
     /// the data type's range (docs/SCENE-FORMAT.md 3).
