@@ -55,7 +55,7 @@ Likeness compare(const Image& a, const Image& b, int w, int h) {
 
 } // namespace
 
-TEST_CASE("the first image is a coarse version of the still frame; drag frames look alike") {
+TEST_CASE("the first image is a coarse version of the still frame, and so are drag frames") {
     if (!haveXvfbRun()) {
         MESSAGE("xvfb-run is not installed: the viewer refinement test is skipped");
         return;

@@ -86,7 +86,7 @@ TEST_CASE("a field the file did not set is added to its node, in the node's layo
     checkReadsBackAs(text, *root);
 }
 
-TEST_CASE("a camera inserted at the root is written there; the rest stays as it was") {
+TEST_CASE("a camera inserted at the root is written there and the rest stays as it was") {
     auto root = readSceneFromString(kText);
     const SceneTextSnapshot snapshot = SceneTextSnapshot::take(kText, *root);
     auto camera = PerspectiveCamera::create();
@@ -118,7 +118,7 @@ TEST_CASE("several top-level nodes: the inserted camera goes after the header") 
     checkReadsBackAs(out, *root);
 }
 
-TEST_CASE("shared nodes and connections are kept; an edit of a shared node is made once") {
+TEST_CASE("shared nodes and connections are kept, and an edit of a shared node is made once") {
     const std::string text = "#Inventor V2.1 ascii\n"
                              "Separator {\n"
                              "  DEF m Material { diffuseColor 1 0 0 }  # red\n"
