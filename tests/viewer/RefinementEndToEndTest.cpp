@@ -2,7 +2,8 @@
 // coarse image (a quarter of the resolution) that looks like the full still frame that follows
 // (the same transfer function and brightness: block averages agree), and a frame drawn during
 // a drag (a pan there and back, so the view is the same) looks like the still frame too. The
-// viewer says when each image came. No timing is asserted here (volsg-bench's business).
+// viewer says when each image came. Frames with nothing new show the kept still image without
+// drawing it. No timing is asserted here (volsg-bench's business).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -78,6 +79,10 @@ TEST_CASE("the first image is a coarse version of the still frame, and so are dr
                << "move view:3d:0.5,0.5\n"
                << "screenshot " << file("drag.png") << "\n"
                << "release left view:3d:0.5,0.5 shift\n"
+               << "wait 2\n"
+               << "screenshot " << file("after.png") << "\n"
+               << "wait 10\n" // nothing changes: the kept still image is shown again
+               << "screenshot " << file("idle.png") << "\n"
                << "quit\n";
     }
     std::string log;
@@ -104,5 +109,15 @@ TEST_CASE("the first image is a coarse version of the still frame, and so are dr
     const Likeness b = compare(drag, still, 640, 400);
     CHECK(b.meanDifference < 0.03);
     CHECK(std::abs(b.brightnessRatio - 1.0) < 0.05);
+    // Idle frames show the still image again, pixel for pixel, without drawing it: the viewer
+    // reports at least those 10 frames as not drawn.
+    const Image after = readPng(file("after.png")), idle = readPng(file("idle.png"));
+    CHECK(changedPixels(after, idle, 0.0f) == 0);
+    const std::size_t framesAt = log.find(" frames, ");
+    REQUIRE(framesAt != std::string::npos);
+    const std::size_t lineStart = log.rfind(' ', framesAt - 1) + 1;
+    const long long frames = std::stoll(log.substr(lineStart, framesAt - lineStart));
+    const long long drawn = std::stoll(log.substr(framesAt + 9));
+    CHECK(drawn <= frames - 10);
     fs::remove_all(dir);
 }

@@ -1005,7 +1005,12 @@ void Viewer::renderViews() {
 
 void Viewer::frame() {
     const auto start = std::chrono::steady_clock::now();
-    GlfwWindow::pollEvents();
+    // Nothing to draw and no script to play: wait for input (or the reload check) rather than
+    // spin.
+    if (idle_ && scriptNext_ >= script_.size() && scriptWait_ == 0)
+        glfwWaitEventsTimeout(0.1);
+    else
+        GlfwWindow::pollEvents();
     const bool scripted = scriptNext_ < script_.size() || scriptWait_ > 0;
     const ScriptStep* step = scripted && scriptWait_ == 0 ? &script_[scriptNext_] : nullptr;
     runScriptStep();
@@ -1047,19 +1052,35 @@ void Viewer::frame() {
     navigation_->adjustClipping(sceneBox());
     ImGui::Render();
 
-    const auto renderStart = std::chrono::steady_clock::now();
-    try {
-        renderViews();
-    } catch (const Error& e) {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glClearColor(0.3f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        if (statusText_ != e.what()) status(e.what());
+    // A still frame that would show exactly what the last one showed is not drawn again: the
+    // views are copied back from the last one (ViewerRedraw.cpp), so the viewer answers input
+    // at once instead of redrawing a slow full-quality image every frame.
+    const ViewSignature signature = viewSignature();
+    idle_ = refineStage_ >= 2 && !isInteracting() && lastShown_ && *lastShown_ == signature &&
+            restoreViews();
+    ++framesTotal_;
+    if (!idle_) {
+        ++framesDrawn_;
+        const auto renderStart = std::chrono::steady_clock::now();
+        lastShown_.reset();
+        try {
+            renderViews();
+            // Only a full still image is kept (a coarse or interactive one is redrawn).
+            if (refineStage_ >= 1 && !isInteracting()) {
+                keepViews();
+                lastShown_ = signature;
+            }
+        } catch (const Error& e) {
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glClearColor(0.3f, 0.0f, 0.0f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            if (statusText_ != e.what()) status(e.what());
+        }
+        glFinish(); // llvmpipe draws on demand: the render time is measured when it is done
+        lastRenderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                                  renderStart)
+                            .count();
     }
-    glFinish(); // llvmpipe draws on demand: the render time is measured when it is done
-    lastRenderMs_ =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - renderStart)
-            .count();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
     if (step && step->kind == ScriptStep::Kind::Screenshot) screenshot(step->text, step->sceneOnly);
@@ -1088,6 +1109,8 @@ void Viewer::frame() {
 int Viewer::run() {
     while (!quit_ && !window_->shouldClose())
         frame();
+    status(std::to_string(framesTotal_) + " frames, " + std::to_string(framesDrawn_) +
+           " drawn (the others showed the last still image again)");
     return exitStatus_;
 }
 

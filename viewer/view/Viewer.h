@@ -134,6 +134,28 @@ private:
     ViewRect viewRect(int view) const;
     int viewAt(const glm::dvec2& pixel) const; ///< -1 outside every view
     void renderViews();
+    /// What the views show: when it is the same as for the last still frame, the views are
+    /// not drawn again (ViewerRedraw.cpp).
+    struct ViewSignature {
+        std::uint64_t newestNode = 0; ///< the largest node version in the scene (edits raise it)
+        std::size_t nodes = 0;
+        glm::ivec2 window{0};
+        WindowLayout layout;
+        std::vector<float> camera; ///< the 3D camera's fields
+        glm::ivec3 cursor{0};
+        bool cursorShown = false, flipped = false;
+        glm::dvec3 patientSigns{1.0};
+        int antialias = 0, stereo = 0;
+        double eyeSeparation = 0.0;
+        glm::vec3 background{0.0f};
+        bool alwaysDraw = false; ///< never equal: something changes without an edit
+        bool operator==(const ViewSignature&) const;
+    };
+    ViewSignature viewSignature() const;
+    /// Copies the window's freshly drawn views aside, or back into the window (false when there
+    /// is nothing of this size to copy back).
+    void keepViews();
+    bool restoreViews();
     /// Renders `root` seen by options.camera into `rect` of the window at `scale` times its size
     /// (2: 2x2 supersampling; below 1: a coarse frame scaled up), multisampled as
     /// options.samples says; the 3D view goes through the stereo renderer when stereo is on.
@@ -227,6 +249,12 @@ private:
     bool quit_ = false;
     int exitStatus_ = 0;
 
+    std::optional<ViewSignature> lastShown_; ///< of the still frame in keptViews_
+    bool idle_ = false;                      ///< the last frame drew nothing new
+    long long framesTotal_ = 0, framesDrawn_ = 0;
+    Framebuffer keptViews_; ///< the window's views as last drawn still
+    Renderbuffer keptViewsColor_;
+    glm::ivec2 keptViewsSize_{0};
     Framebuffer viewTarget_; ///< a view drawn off the window, then copied into its rectangle
     Renderbuffer viewColor_;
     glm::ivec2 viewTargetSize_{0};
