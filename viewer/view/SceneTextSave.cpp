@@ -341,9 +341,9 @@ std::optional<std::string> SceneTextSnapshot::patched(Node& root, std::string& r
                 edits.push_back({topLevelStart_, topLevelStart_, nodeText(*now.front(), "")});
             } else {
                 const std::string indent = indentAt(text_, record.open) + "  ";
-                edits.push_back({record.open + 1, record.open + 1,
-                                 "\n" + nodeText(*now.front(), indent)
-                                            .substr(0, nodeText(*now.front(), indent).size() - 1)});
+                std::string written = nodeText(*now.front(), indent);
+                written.pop_back(); // its last newline: the one after '{' comes before it
+                edits.push_back({record.open + 1, record.open + 1, "\n" + written});
             }
         }
         if (&node == &root && rootIsWrapper_) continue; // no text of its own
