@@ -1042,6 +1042,11 @@ void Viewer::frame() {
     events_.clear();
     seriesPanel_.update(glfwGetTime());
     followSceneEdits();
+    // Engines, field connections and animated nodes (Rotor, Blinker, ...) run on the viewer's
+    // clock; a field they change redraws the views (the frame's signature sees its version).
+    engines_.evaluate(
+        *root_,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - startTime_).count());
     tfPanel_.deferHistogram = refineStage_ == 0; // the first image before the histogram
     if (options_.panels) drawPanels();
     progressText_ = refineStage_ == 0 ? "first image at a quarter of the resolution: refining..."

@@ -23,6 +23,7 @@
 #include <volsg/editors/panels/FieldPanel.h>
 #include <volsg/editors/panels/RegionHistogramPanel.h>
 #include <volsg/editors/panels/TransferFunctionPanel.h>
+#include <volsg/engines/Evaluator.h>
 #include <volsg/gl/Framebuffer.h>
 #include <volsg/gl/Renderbuffer.h>
 #include <volsg/gl/Texture.h>
@@ -206,6 +207,8 @@ private:
     std::unique_ptr<GlfwWindow> window_;
     std::unique_ptr<Renderer> renderer_;
     ref_ptr<Node> root_;
+    ConnectionEvaluator
+        engines_; ///< engines, connections and animated nodes, on the viewer's clock
     std::filesystem::file_time_type sceneTime_{};
     std::chrono::steady_clock::time_point lastReloadCheck_{};
 
