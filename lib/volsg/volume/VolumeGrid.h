@@ -12,6 +12,7 @@
 
 #include <volsg/core/Limits.h>
 #include <volsg/core/Object.h>
+#include <volsg/volume/VolumeGeometry.h>
 
 namespace volsg {
 
@@ -58,6 +59,11 @@ public:
     double smallestSpacing() const;                    ///< L0 of docs/SCENE-FORMAT.md section 4
     glm::dvec3 voxelCenter(int i, int j, int k) const; ///< in local coordinates
     bool isLabelType() const { return type_ == VoxelType::UByte || type_ == VoxelType::UShort; }
+
+    /// The file's placement in patient space (VolumeGeometry.h); unknown for raw and generated
+    /// grids. Rendering uses the centred local box; a scene built for the file places it.
+    const VolumeGeometry& geometry() const { return geometry_; }
+    void setGeometry(const VolumeGeometry& geometry) { geometry_ = geometry; }
 
     std::size_t voxelCount() const { return voxelCount_; }
     std::size_t byteSize() const { return voxelCount_ * voxelTypeSize(type_); }
@@ -110,6 +116,7 @@ private:
     glm::ivec3 dimensions_;
     glm::dvec3 spacing_;
     std::size_t voxelCount_;
+    VolumeGeometry geometry_;
     Storage storage_;
 };
 
