@@ -1,4 +1,5 @@
-// volsg-render: renders a scene file headless to PNG or PFM, or writes it back as a scene file.
+// volsg-render: renders a scene file (or any data file volsg opens, in the scene built for it)
+// headless to PNG or PFM, or writes it back as a scene file.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -11,13 +12,16 @@
 #include <volsg/render/Renderer.h>
 #include <volsg/render/StereoRenderer.h>
 #include <volsg/volumescene/ReferenceScene.h>
-#include <volsg/voxelfile/VoxelFileScene.h>
+#include <volsg/volumescene/SceneForFile.h>
 
 namespace {
 
 const char* usage =
-    "usage: volsg-render SCENE -o OUT.png|OUT.pfm|OUT.iv [--size WxH] [--backend osmesa|egl]\n"
-    "  (SCENE: a scene file or a .vsgv voxel-list file written by volsg-pack)\n"
+    "usage: volsg-render FILE -o OUT.png|OUT.pfm|OUT.iv [--size WxH] [--backend osmesa|egl]\n"
+    "  (FILE: a scene file, a .vsgv voxel-list file written by volsg-pack, a volume\n"
+    "   (.nrrd .nhdr .mhd .mha .nii .nii.gz, a DICOM folder or file, raw with the options\n"
+    "   below) or a glTF model (.gltf .glb), shown in the scene built for it; -o OUT.iv\n"
+    "   writes that scene)\n"
     "                    [--background R,G,B] [--reference [--tolerance T]]\n"
     "                    [--stereo anaglyph|side-by-side [--eye-separation F]]\n"
     "                    [--interactive]\n"
@@ -30,7 +34,8 @@ const char* usage =
     "  --eye-separation  the eye separation as a fraction of focalDistance (default 1/30)\n"
     "  --interactive the frame the viewer draws while the user drags: volumes use their\n"
     "                interactive settings (Volume.interactivePlanes,\n"
-    "                ShearWarpVolume.interactiveSliceStep)\n";
+    "                ShearWarpVolume.interactiveSliceStep)\n"
+    "%s";
 
 double parseTolerance(const std::string& text) {
     char* end = nullptr;
@@ -47,6 +52,7 @@ int run(volsg::cli::Arguments& args) {
     bool reference = false;
     volsg::RayCastOptions rayOptions;
     volsg::StereoOptions stereo;
+    volsg::OpenFileOptions open;
     stereo.mode = volsg::StereoMode::Off;
     volsg::cli::Options table;
     table.text({"-o", "--output"}, output)
@@ -58,15 +64,18 @@ int run(volsg::cli::Arguments& args) {
         .value("--tolerance",
                [&](const std::string& v) { rayOptions.tolerance = parseTolerance(v); })
         .value("--stereo", [&](const std::string& v) { stereo.mode = volsg::parseStereoMode(v); })
-        .fraction("--eye-separation", stereo.separationFraction);
-    if (!table.read(args, usage, volsg::cli::sceneOperand(scene))) return 0;
-    if (scene.empty() || output.empty()) return volsg::cli::usageError(usage);
+        .fraction("--eye-separation", stereo.separationFraction)
+        .rawVolume(open);
+    const std::string help = volsg::cli::withRawUsage(usage);
+    if (!table.read(args, help.c_str(), volsg::cli::sceneOperand(scene))) return 0;
+    if (scene.empty() || output.empty()) return volsg::cli::usageError(help.c_str());
+    volsg::cli::checkRawLayout(open);
     const std::string ext = volsg::cli::extensionOf(output);
     if (ext != ".png" && ext != ".pfm" && ext != ".iv")
         throw volsg::Error("output '" + output + "' must end in .png, .pfm or .iv");
 
-    // A .vsgv (volsg-pack) opens as its stored scene.
-    volsg::ref_ptr<volsg::Node> root = volsg::readSceneOrVoxelFile(scene);
+    // A .vsgv (volsg-pack) opens as its stored scene, a data file in the scene built for it.
+    volsg::ref_ptr<volsg::Node> root = volsg::readSceneForFile(scene, open);
     if (ext == ".iv") {
         volsg::writeSceneToFile(output, *root);
         return 0;

@@ -86,7 +86,7 @@ std::vector<Field*> textFieldsOf(Node& node) {
 Viewer::Viewer(ViewerOptions options) : options_(std::move(options)) {
     if (!options_.scriptPath.empty())
         script_ = parseViewerScript(readText(options_.scriptPath), options_.scriptPath);
-    root_ = readSceneOrVoxelFile(options_.scenePath);
+    root_ = readSceneForFile(options_.scenePath, options_.open);
     sceneTime_ = std::filesystem::last_write_time(options_.scenePath);
 
     GlfwWindowOptions windowOptions;
@@ -255,7 +255,7 @@ void Viewer::handleSceneEvents() {
                 switch (e.key) {
                 case GLFW_KEY_S:
                     if (ctrl)
-                        saveScene(options_.scenePath);
+                        saveScene(scenePathForSaving(options_.scenePath, options_.open));
                     else
                         seekMode_ = !seekMode_;
                     break;
@@ -776,7 +776,7 @@ void Viewer::checkReload() {
     if (ec || time == sceneTime_) return;
     sceneTime_ = time;
     try {
-        ref_ptr<Node> fresh = readSceneOrVoxelFile(options_.scenePath);
+        ref_ptr<Node> fresh = readSceneForFile(options_.scenePath, options_.open);
         detachAll();
         root_ = fresh;
         loadScene();
@@ -1171,7 +1171,7 @@ void Viewer::drawPanels() {
     if (ImGui::Button("redo")) history_.redo();
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ImGui::Button("save")) saveScene(options_.scenePath);
+    if (ImGui::Button("save")) saveScene(scenePathForSaving(options_.scenePath, options_.open));
     const bool manipulable =
         selected_ &&
         (selected_->isA<ClipPlane>() || selected_->isA<BoxClip>() || selected_->isA<Transform>());

@@ -11,9 +11,12 @@ namespace volsg {
 
 namespace {
 
-/// Opacities (per reference length, docs/SCENE-FORMAT.md section 4) at the ramp's points: the
-/// typical structure faint, the dense one solid enough to hide what is behind it.
-constexpr double typicalOpacity = 0.04, denseOpacity = 0.6;
+/// Opacities (per reference length, docs/SCENE-FORMAT.md section 4) at the ramp's points, at
+/// the 50th, 85th and 97th percentiles of the voxels beyond the background: the typical
+/// structure (soft tissue, hundreds of voxels deep) faint, the less common (bone) visible, the
+/// rare densest solid enough to hide what is behind it.
+constexpr double typicalOpacity = 0.01, commonOpacity = 0.1, denseOpacity = 0.6;
+constexpr double typicalShare = 0.5, commonShare = 0.85, denseShare = 0.97;
 
 /// A bin belongs to the background peak while it holds at least this share of the peak's count.
 constexpr double peakShoulder = 0.05;

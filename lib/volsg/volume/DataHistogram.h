@@ -28,10 +28,10 @@ DataHistogram histogramOf(const VolumeGrid& grid, std::size_t maxBins = 256);
 
 /// A first transfer function for data nobody has looked at: dataRange is the data's
 /// minimum..maximum; the dominant peak (the background: air in CT, the empty field in MR) and the
-/// values on its far side are transparent; opacity rises from the end of that peak to the 50th
-/// percentile of the remaining voxels (faint) and to their 97th percentile (dense), so that
-/// the large classes (soft tissue) stay see-through and the rare dense ones (bone, contrast)
-/// stand out. The colours run from dark red through orange to near white with the value.
+/// values on its far side are transparent; opacity rises from the end of that peak through the
+/// 50th (faint), 85th and 97th (dense) percentiles of the remaining voxels, so that the large
+/// classes (soft tissue) stay see-through and the rare dense ones (bone, contrast) stand out.
+/// The colours run from dark red through orange to near white with the value.
 /// When the background peak is the brightest class, the ramp runs the other way.
 TransferFunction1D transferFunctionFromHistogram(const DataHistogram& histogram);
 
