@@ -5,6 +5,7 @@
 #include <string>
 
 #include "CommandLine.h"
+#include "TerminalProgress.h"
 #include <volsg/context/Context.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/SceneReader.h>
@@ -74,18 +75,25 @@ int run(volsg::cli::Arguments& args) {
     if (ext != ".png" && ext != ".pfm" && ext != ".iv")
         throw volsg::Error("output '" + output + "' must end in .png, .pfm or .iv");
 
+    // Stages of a run on a terminal: reading (a large volume takes seconds), then rendering.
+    volsg::cli::TerminalProgress progress("volsg-render");
+    progress.stage(0.0, "reading " + scene);
     // A .vsgv (volsg-pack) opens as its stored scene, a data file in the scene built for it.
     volsg::ref_ptr<volsg::Node> root = volsg::readSceneForFile(scene, open);
     if (ext == ".iv") {
         volsg::writeSceneToFile(output, *root);
         return 0;
     }
+    progress.stage(0.4, reference ? "rendering the reference" : "rendering");
     auto context = volsg::Context::createOffscreen(backend);
     if (reference && stereo.mode != volsg::StereoMode::Off)
         throw volsg::Error("--reference and --stereo cannot be combined");
     if (reference) {
         volsg::RayCastResult details;
-        volsg::writeImage(output, volsg::renderReference(*root, options, &details, rayOptions));
+        const volsg::Image image = volsg::renderReference(*root, options, &details, rayOptions);
+        progress.stage(0.95, "writing " + output);
+        volsg::writeImage(output, image);
+        progress.finish();
         std::printf("reference: error bound %.3g (tolerance %.3g, %s, at most %d halvings)\n",
                     details.errorBound, rayOptions.tolerance,
                     details.converged ? "converged" : "NOT converged everywhere",
@@ -93,7 +101,9 @@ int run(volsg::cli::Arguments& args) {
         return 0;
     }
     volsg::Renderer renderer;
-    volsg::writeImage(output, volsg::renderStereo(renderer, *root, options, stereo));
+    const volsg::Image image = volsg::renderStereo(renderer, *root, options, stereo);
+    progress.stage(0.95, "writing " + output);
+    volsg::writeImage(output, image);
     return 0;
 }
 

@@ -197,3 +197,23 @@ TEST_CASE("a ball of tissue in air opened raw: visible in the middle, air transp
     // GL agrees with the reference in the middle (the slicer's documented error is a few %).
     CHECK(difference(gl.at(24, 24), glm::vec3(reference.at(24, 24))) < 0.05);
 }
+
+TEST_CASE("a missing data file: the render error names the scene file, the VolumeData's line and "
+          "the data file") {
+    TempDir dir;
+    const std::string scenePath = dir.file("scene.iv");
+    std::ofstream(scenePath) << "#Inventor V2.1 ascii\nSeparator {\n  TransferFunction { }\n"
+                                "  VolumeData { fileName \"gone.nii.gz\" }\n  Volume { }\n}\n";
+    ref_ptr<Node> root = readSceneForFile(scenePath);
+    auto context = Context::createOffscreen();
+    Renderer renderer;
+    RenderOptions options;
+    options.width = options.height = 16;
+    const std::string message = errorOf([&] { renderer.render(*root, options); });
+    CAPTURE(message);
+    CHECK(message.find(scenePath + ":4:3:") != std::string::npos); // the VolumeData's place
+    CHECK(message.find("VolumeData") != std::string::npos);
+    CHECK(message.find("gone.nii.gz") != std::string::npos);
+    CHECK(message.find("No such file") != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+}

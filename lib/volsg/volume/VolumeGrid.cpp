@@ -149,6 +149,7 @@ double VolumeGrid::value(std::size_t index) const {
 }
 
 void VolumeGrid::setValue(std::size_t index, double v) {
+    rangeKnown_.store(false, std::memory_order_relaxed);
     std::visit(
         [index, v](auto& data) {
             using T = typename std::decay_t<decltype(data)>::value_type;
@@ -161,6 +162,7 @@ void VolumeGrid::setValue(std::size_t index, double v) {
 }
 
 std::span<std::byte> VolumeGrid::bytes() {
+    rangeKnown_.store(false, std::memory_order_release); // the caller may write
     return std::visit([](auto& v) { return std::as_writable_bytes(std::span(v.data(), v.size())); },
                       storage_);
 }
@@ -176,6 +178,16 @@ void VolumeGrid::throwTypeMismatch() const {
 }
 
 std::pair<double, double> VolumeGrid::minMax() const {
+    if (rangeKnown_.load(std::memory_order_acquire)) return range_;
+    std::lock_guard<std::mutex> lock(rangeMutex_);
+    if (!rangeKnown_.load(std::memory_order_acquire)) {
+        range_ = computeMinMax();
+        rangeKnown_.store(true, std::memory_order_release);
+    }
+    return range_;
+}
+
+std::pair<double, double> VolumeGrid::computeMinMax() const {
     return std::visit(
         [](const auto& data) {
             using T = std::decay_t<decltype(data[0])>;
@@ -202,6 +214,8 @@ std::pair<double, double> VolumeGrid::minMax() const {
 }
 
 std::pair<double, double> VolumeGrid::naturalRange() const {
+    const auto range = minMax();
+    if (range.first < range.second || type_ == VoxelType::Float) return range;
     switch (type_) {
     case VoxelType::UByte:
         return {0.0, 255.0};
@@ -210,9 +224,9 @@ std::pair<double, double> VolumeGrid::naturalRange() const {
     case VoxelType::Short:
         return {-32768.0, 32767.0};
     case VoxelType::Float:
-        return minMax();
+        break;
     }
-    return {0.0, 0.0};
+    return range;
 }
 
 } // namespace volsg
