@@ -1,7 +1,7 @@
 // volsg-view opens data files directly (no hand-written scene) under Xvfb: a gzip raw volume
 // with its layout on the command line, a NRRD, a NIfTI and a DICOM series. The first image must
-// show the volume, and the volume must show structure; the scene the viewer built is saved and
-// read back.
+// show the volume, and the volume must show structure; ctrl+s saves the scene the viewer built
+// as an .iv beside the data, which reads back.
 //
 // Measures on the scene-only screenshot, against the viewer's background (26, 26, 31):
 // - not blank: at least 3% of the pixels differ from the background by more than 10/255;
@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,29 +56,36 @@ Measures measure(const Image& image) {
     return m;
 }
 
-void openAndLook(const std::string& file, const std::string& arguments) {
-    CAPTURE(file);
+// Opens `name` (a file or folder that `prepare` puts into a fresh folder, as a user's data
+// would be) in volsg-view, takes the first image, saves with ctrl+s (the .iv beside the data)
+// and checks both.
+void openAndLook(const std::string& name, const std::function<void(const fs::path&)>& prepare,
+                 const std::string& arguments, const std::string& savedName) {
+    CAPTURE(name);
     const fs::path dir =
         fs::temp_directory_path() / ("volsg-view-open-" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
-    const std::string shot = (dir / "first.png").string(), saved = (dir / "saved.iv").string();
+    prepare(dir);
+    const std::string shot = (dir / "first.png").string();
     const std::string script = (dir / "script.txt").string();
-    std::ofstream(script) << "wait 1\nscreenshot " << shot << " scene\nsave " << saved
-                          << "\nquit\n";
+    std::ofstream(script) << "wait 1\nscreenshot " << shot << " scene\nkey s ctrl\nwait 1\nquit\n";
     std::string log;
-    const int status =
-        runViewerScript(file, "--size 360x300 --no-panels " + arguments, script, log);
+    const int status = runViewerScript((dir / name).string(),
+                                       "--size 360x300 --no-panels " + arguments, script, log);
     INFO("viewer output: " << log);
     REQUIRE(status == 0);
 
     const Measures m = measure(readPng(shot));
-    INFO("coverage " << m.coverage << ", luminance spread " << m.spread);
+    MESSAGE(name << ": coverage " << m.coverage << ", luminance spread " << m.spread);
     CHECK(m.coverage > 0.03);
     CHECK(m.spread > 0.08);
 
-    // The scene the viewer built, saved: the data's own range in the TransferFunction.
-    ref_ptr<Node> scene = readScene(saved);
+    // ctrl+s wrote the scene the viewer built beside the data, never over it; it reads back
+    // with the data's own range in its TransferFunction.
+    const fs::path saved = dir / savedName;
+    REQUIRE(fs::exists(saved));
+    ref_ptr<Node> scene = readScene(saved.string());
     const auto volumes = findAll(*scene, VolumeData::classType());
     const auto transfers = findAll(*scene, TransferFunction::classType());
     REQUIRE(volumes.size() == 1);
@@ -96,18 +104,37 @@ TEST_CASE("volsg-view opens a gzip raw volume, a NRRD, a NIfTI and a DICOM serie
         MESSAGE("xvfb-run is not installed: the viewer end-to-end test is skipped");
         return;
     }
-    const std::string data = VOLSG_DATA_DIR;
+    const fs::path data = VOLSG_DATA_DIR;
+    const auto copy = [](const fs::path& from) {
+        return [from](const fs::path& dir) {
+            fs::copy(from, dir / from.filename(), fs::copy_options::recursive);
+        };
+    };
     SUBCASE("gzip raw (head CT, int16)") {
-        openAndLook(data + "/vtkjs-headsq/headsq_64x64x93_int16le.raw.gz",
-                    "--dims 64 64 93 --type short --spacing 3.2 3.2 1.5");
+        openAndLook("headsq_64x64x93_int16le.raw.gz",
+                    copy(data / "vtkjs-headsq/headsq_64x64x93_int16le.raw.gz"),
+                    "--dims 64 64 93 --type short --spacing 3.2 3.2 1.5",
+                    "headsq_64x64x93_int16le.iv");
     }
     SUBCASE("NRRD (chest CT)") {
-        openAndLook(data + "/derived/lidc2_chest.nhdr", "");
+        const std::string raw = (data / "vtkjs-lidc2/lidc2_256x256x133_uint8.raw.gz").string();
+        openAndLook(
+            "chest.nhdr",
+            [&](const fs::path& dir) {
+                std::ofstream(dir / "chest.nhdr")
+                    << "NRRD0004\ntype: uint8\ndimension: 3\nspace: right-anterior-superior\n"
+                       "sizes: 256 256 133\nspace directions: (1.40625,0,0) (0,1.40625,0) "
+                       "(0,0,2.5)\nencoding: gzip\ndata file: "
+                    << raw << "\n";
+            },
+            "", "chest.iv");
     }
     SUBCASE("NIfTI") {
-        openAndLook(data + "/derived/headsq_32x32x24_int16.nii.gz", "");
+        openAndLook("headsq_32x32x24_int16.nii.gz",
+                    copy(data / "derived/headsq_32x32x24_int16.nii.gz"), "",
+                    "headsq_32x32x24_int16.iv");
     }
     SUBCASE("DICOM series") {
-        openAndLook(data + "/derived/headsq_dicom", "");
+        openAndLook("headsq_dicom", copy(data / "derived/headsq_dicom"), "", "headsq_dicom.iv");
     }
 }
