@@ -258,7 +258,12 @@ TEST_CASE("malformed DICOM series are refused naming the file") {
     std::string message = errorOf([&] { readVolume(dir.path().string()); });
     CAPTURE(message);
     CHECK(message.find("not evenly spaced") != std::string::npos);
-    CHECK(message.find(".dcm") != std::string::npos);
+    // Named where the slice is missing: slice k = 12 (file 012) is gone, k = 13 (file 011)
+    // comes after a gap of two spacings.
+    CHECK(message.find("slice-011.dcm") != std::string::npos);
+    // Twice the spacing (positions are written to 4 decimals: 11.99999 or 12.00001).
+    CHECK((message.find("a gap of 11.99") != std::string::npos ||
+           message.find("a gap of 12.00") != std::string::npos));
 
     TempDir empty;
     std::ofstream(empty.file("README")) << "no images here\n";

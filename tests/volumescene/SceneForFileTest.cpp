@@ -18,6 +18,7 @@
 #include <volsg/context/Context.h>
 #include <volsg/core/Error.h>
 #include <volsg/image/Image.h>
+#include <volsg/io/SceneReader.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/Group.h>
@@ -216,4 +217,19 @@ TEST_CASE("a missing data file: the render error names the scene file, the Volum
     CHECK(message.find("gone.nii.gz") != std::string::npos);
     CHECK(message.find("No such file") != std::string::npos);
     CHECK(message.find('\n') == std::string::npos);
+}
+
+TEST_CASE("a scene's VolumeData reads NIfTI files and DICOM folders by fileName") {
+    for (const std::string name : {"headsq_32x32x24_int16.nii.gz", "headsq_dicom"}) {
+        CAPTURE(name);
+        ref_ptr<Node> root =
+            readSceneFromString("#Inventor V2.1 ascii\nVolumeData { fileName \"" + name + "\" }\n",
+                                data + "/derived/scene.iv");
+        auto* volumeData = dynamic_cast<VolumeData*>(root.get());
+        REQUIRE(volumeData);
+        const ref_ptr<const VolumeGrid> grid = volumeData->grid();
+        CHECK(grid->dimensions() == glm::ivec3(32, 32, 24));
+        CHECK(grid->spacing().z == doctest::Approx(6.0));
+        CHECK(grid->geometry().known);
+    }
 }

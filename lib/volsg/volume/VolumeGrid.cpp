@@ -214,19 +214,20 @@ std::pair<double, double> VolumeGrid::computeMinMax() const {
 }
 
 std::pair<double, double> VolumeGrid::naturalRange() const {
-    const auto range = minMax();
-    if (range.first < range.second || type_ == VoxelType::Float) return range;
     switch (type_) {
     case VoxelType::UByte:
         return {0.0, 255.0};
     case VoxelType::UShort:
-        return {0.0, 65535.0};
-    case VoxelType::Short:
-        return {-32768.0, 32767.0};
-    case VoxelType::Float:
-        break;
+    case VoxelType::Short: {
+        // 16-bit data rarely spans its type: 12-bit CT in SHORT uses a sliver of -32768..32767.
+        const auto range = minMax();
+        if (range.first < range.second) return range;
+        return type_ == VoxelType::UShort ? std::pair(0.0, 65535.0) : std::pair(-32768.0, 32767.0);
     }
-    return range;
+    case VoxelType::Float:
+        return minMax();
+    }
+    return {0.0, 0.0};
 }
 
 } // namespace volsg

@@ -105,10 +105,11 @@ public:
     /// changed the voxels. A span from data() or bytes() written after this call leaves the
     /// kept range stale: call a non-const accessor again after such writes.
     std::pair<double, double> minMax() const;
-    /// The range a transfer function without a dataRange maps to v = 0..1: the data's own
-    /// minMax() (a 12-bit CT in SHORT spans a sliver of -32768..32767, which would render it
-    /// flat grey). A constant grid of an integer type, which has no range of its own, takes the
-    /// type's: UByte 0..255, UShort 0..65535, Short -32768..32767 (Float: the value itself).
+    /// The range a transfer function without a dataRange maps to v = 0..1: UByte 0..255 (8-bit
+    /// data spans its type, as windowed CT does, and Inventor's VolumeViz maps it so); UShort
+    /// and Short the data's own minMax() (a 12-bit CT in SHORT spans a sliver of
+    /// -32768..32767, which would render it flat grey), or the type's range for a constant
+    /// grid, which has none of its own; Float minMax().
     std::pair<double, double> naturalRange() const;
 
 protected:

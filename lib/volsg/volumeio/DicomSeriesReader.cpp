@@ -85,7 +85,7 @@ template <std::uint16_t Group, std::uint16_t Element> int unsignedShort(const gd
 }
 
 // The slice's header (everything before the pixel data), or false when the file is not DICOM.
-bool readSliceHeader(const std::string& path, Slice& s) {
+bool readSliceHeaderUnguarded(const std::string& path, Slice& s) {
     gdcm::Reader reader;
     reader.SetFileName(path.c_str());
     std::set<gdcm::Tag> skip{pixelDataTag};
@@ -112,6 +112,16 @@ bool readSliceHeader(const std::string& path, Slice& s) {
     if (elementNumbers(ds, gdcm::Tag(0x0028, 0x1053), v, 1)) s.slope = v[0];
     if (elementNumbers(ds, gdcm::Tag(0x0028, 0x1052), v, 1)) s.intercept = v[0];
     return true;
+}
+
+// readSliceHeaderUnguarded, with whatever GDCM throws on malformed input (bad_alloc for an
+// absurd element length, its own exceptions) taken as "not a DICOM file GDCM can read".
+bool readSliceHeader(const std::string& path, Slice& s) {
+    try {
+        return readSliceHeaderUnguarded(path, s);
+    } catch (const std::exception&) {
+        return false;
+    }
 }
 
 // The files that may hold the series: the folder's regular files, in name order.
@@ -198,16 +208,23 @@ double orderSlices(std::vector<Slice>& slices) {
     std::sort(slices.begin(), slices.end(),
               [](const Slice& a, const Slice& b) { return a.along < b.along; });
     if (slices.size() == 1) return first.sliceThickness > 0.0 ? first.sliceThickness : 1.0;
-    const double spacing = (slices.back().along - slices.front().along) / double(slices.size() - 1);
+    std::vector<double> gaps;
     for (std::size_t i = 1; i < slices.size(); ++i) {
-        const double gap = slices[i].along - slices[i - 1].along;
-        if (!(gap > 0.0))
+        gaps.push_back(slices[i].along - slices[i - 1].along);
+        if (!(gaps.back() > 0.0))
             fail(slices[i], "two slices at the same position (" + std::to_string(slices[i].along) +
                                 " mm along the normal): a series with repeats cannot be read");
-        if (std::abs(gap - spacing) > 0.01 * spacing + 1e-3)
-            fail(slices[i], "slices are not evenly spaced: gap of " + std::to_string(gap) +
-                                " mm where the series averages " + std::to_string(spacing) + " mm");
     }
+    // Against the median gap, so that a missing slice is named where it is missing.
+    std::vector<double> sorted = gaps;
+    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2),
+                     sorted.end());
+    const double spacing = sorted[sorted.size() / 2];
+    for (std::size_t i = 0; i < gaps.size(); ++i)
+        if (std::abs(gaps[i] - spacing) > 0.01 * spacing + 1e-3)
+            fail(slices[i + 1], "slices are not evenly spaced: a gap of " +
+                                    std::to_string(gaps[i]) + " mm before this slice, where the " +
+                                    "others are " + std::to_string(spacing) + " mm");
     return spacing;
 }
 
@@ -243,7 +260,13 @@ VoxelType gridTypeFor(const std::vector<Slice>& slices) {
 void readSlicePixels(const Slice& s, ref_ptr<VolumeGrid>& grid, int k, std::vector<char>& buffer) {
     gdcm::ImageReader reader;
     reader.SetFileName(s.path.c_str());
-    if (!reader.Read()) throw Error("GDCM cannot read the slice's pixel data", s.path);
+    bool read = false;
+    try {
+        read = reader.Read();
+    } catch (const std::exception& e) {
+        throw Error(std::string("GDCM cannot read the slice's pixel data: ") + e.what(), s.path);
+    }
+    if (!read) throw Error("GDCM cannot read the slice's pixel data", s.path);
     const gdcm::Image& image = reader.GetImage();
     const std::size_t pixels = std::size_t(s.rows) * std::size_t(s.columns);
     const std::size_t bytesPer = std::size_t(s.bitsAllocated) / 8;
@@ -254,8 +277,13 @@ void readSlicePixels(const Slice& s, ref_ptr<VolumeGrid>& grid, int k, std::vect
                         std::to_string(bytesPer) + ")",
                     s.path);
     buffer.resize(pixels * bytesPer);
-    if (!image.GetBuffer(buffer.data()))
-        throw Error("GDCM cannot decode the slice's pixel data", s.path);
+    bool decoded = false;
+    try {
+        decoded = image.GetBuffer(buffer.data());
+    } catch (const std::exception& e) {
+        throw Error(std::string("GDCM cannot decode the slice's pixel data: ") + e.what(), s.path);
+    }
+    if (!decoded) throw Error("GDCM cannot decode the slice's pixel data", s.path);
     const std::size_t base = grid->index(0, 0, k);
     for (std::size_t i = 0; i < pixels; ++i) {
         double stored;

@@ -90,6 +90,9 @@ FileKind fileKindOf(const std::string& path, const OpenFileOptions& options) {
     if (std::filesystem::is_directory(path, ec)) return FileKind::Volume; // a DICOM series
     if (!std::filesystem::exists(path, ec))
         throw Error("cannot open file: No such file or directory", path);
+    // Never open a FIFO or device to sniff it: the read would block or never end.
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error("cannot open file: not a regular file or folder", path);
     const std::string name = lowerName(path);
     const std::string head = headOf(path, 132);
     if (endsWith(name, ".vsgv") ||
