@@ -9,8 +9,8 @@
 #include <volsg/actions/Action.h>
 #include <volsg/io/ReadContext.h>
 #include <volsg/nodes/VolumeObject.h>
-#include <volsg/volume/VolumeGrid.h>
 #include <volsg/shearwarp/VoxelListOptimizer.h>
+#include <volsg/volume/VolumeGrid.h>
 
 namespace volsg {
 
