@@ -88,8 +88,10 @@ Viewer::Viewer(ViewerOptions options)
     : options_(std::move(options)), startTime_(std::chrono::steady_clock::now()) {
     if (!options_.scriptPath.empty())
         script_ = parseViewerScript(readText(options_.scriptPath), options_.scriptPath);
-    root_ = readSceneOrVoxelFile(options_.scenePath);
-    takeSceneText();
+    root_ = readSceneForFile(options_.scenePath, options_.open);
+    // A scene file's text is kept for saving in place; a data file's scene is saved beside it.
+    if (scenePathForSaving(options_.scenePath, options_.open) == options_.scenePath)
+        takeSceneText();
     sceneTime_ = std::filesystem::last_write_time(options_.scenePath);
 
     GlfwWindowOptions windowOptions;
@@ -260,7 +262,7 @@ void Viewer::handleSceneEvents() {
                 switch (e.key) {
                 case GLFW_KEY_S:
                     if (ctrl)
-                        saveScene(options_.scenePath);
+                        saveScene(scenePathForSaving(options_.scenePath, options_.open));
                     else
                         seekMode_ = !seekMode_;
                     break;
@@ -725,7 +727,7 @@ void Viewer::checkReload() {
     if (ec || time == sceneTime_) return;
     sceneTime_ = time;
     try {
-        ref_ptr<Node> fresh = readSceneOrVoxelFile(options_.scenePath);
+        ref_ptr<Node> fresh = readSceneForFile(options_.scenePath, options_.open);
         detachAll();
         root_ = fresh;
         takeSceneText();

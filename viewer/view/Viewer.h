@@ -33,6 +33,7 @@
 #include <volsg/manipulators/WalkNavigation.h>
 #include <volsg/math/Box3.h>
 #include <volsg/render/StereoRenderer.h>
+#include <volsg/volumescene/SceneForFile.h>
 
 #include "InteractiveQuality.h"
 #include "PatientOrientation.h"
@@ -55,7 +56,8 @@ class Renderer;
 std::string uniqueScreenshotName(const std::string& folder);
 
 struct ViewerOptions {
-    std::string scenePath;
+    std::string scenePath;  ///< a scene file, or any data file volsg opens (SceneForFile.h)
+    OpenFileOptions open;   ///< what a raw data file cannot say about itself
     std::string scriptPath; ///< empty: interactive only
     int width = 1280, height = 800;
     glm::vec3 background{0.1f, 0.1f, 0.12f};

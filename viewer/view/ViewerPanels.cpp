@@ -19,6 +19,7 @@
 #include <volsg/nodes/ClipPlane.h>
 #include <volsg/nodes/Transform.h>
 #include <volsg/nodes/VolumeSeries.h> // complete for SeriesPanel's ref_ptr
+#include <volsg/volumescene/SceneForFile.h>
 
 namespace volsg {
 
@@ -128,7 +129,7 @@ void Viewer::drawScenePanel() {
     if (ImGui::Button("redo")) history_.redo();
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ImGui::Button("save")) saveScene(options_.scenePath);
+    if (ImGui::Button("save")) saveScene(scenePathForSaving(options_.scenePath, options_.open));
     // Save As: a new file name (relative names from the current folder); later saves go there.
     ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - 70.0f));
     ImGui::InputTextWithHint("##saveas", "save as: file.iv", saveAsPath_, sizeof saveAsPath_);

@@ -118,6 +118,13 @@ void VolumeData::readDone(const ReadContext& context) {
     directory_ = context.directory;
 }
 
+void VolumeData::adoptLoaded(ref_ptr<const VolumeGrid> data, const std::string& directory) {
+    directory_ = directory;
+    grid_ = std::move(data);
+    tags_ = nullptr;
+    loadedVersion_ = version();
+}
+
 void VolumeData::doAction(Action& action) {
     action.state().add(*this);
 }

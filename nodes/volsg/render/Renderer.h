@@ -87,8 +87,9 @@ private:
 };
 
 /// The camera a render of this scene uses: the first Camera in traversal order with the model
-/// matrix above it, or, without one, a new PerspectiveCamera in its default orientation that
-/// views the whole bounding box from +Z (viewAll; model matrix identity).
+/// matrix above it, or, without one, a new camera in its default orientation that views the
+/// whole bounding box from +Z (viewAll; model matrix identity): a PerspectiveCamera, or an
+/// OrthographicCamera when the scene draws a ShearWarpVolume (parallel projections only).
 struct SceneCamera {
     ref_ptr<Camera> camera;
     glm::dmat4 model{1.0};
