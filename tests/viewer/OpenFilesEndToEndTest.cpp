@@ -121,11 +121,12 @@ TEST_CASE("volsg-view opens a gzip raw volume, a NRRD, a NIfTI and a DICOM serie
         openAndLook(
             "chest.nhdr",
             [&](const fs::path& dir) {
+                // The data beside the header: a header names files only inside its folder.
+                fs::copy_file(raw, dir / "chest.raw.gz");
                 std::ofstream(dir / "chest.nhdr")
                     << "NRRD0004\ntype: uint8\ndimension: 3\nspace: right-anterior-superior\n"
                        "sizes: 256 256 133\nspace directions: (1.40625,0,0) (0,1.40625,0) "
-                       "(0,0,2.5)\nencoding: gzip\ndata file: "
-                    << raw << "\n";
+                       "(0,0,2.5)\nencoding: gzip\ndata file: chest.raw.gz\n";
             },
             "", "chest.iv");
     }

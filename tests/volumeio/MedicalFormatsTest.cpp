@@ -168,7 +168,8 @@ TEST_CASE("localToPatient puts each voxel centre where the file's geometry says"
 }
 
 TEST_CASE("NRRD space directions, space origin and a RAS space give LPS geometry") {
-    const ref_ptr<VolumeGrid> grid = readVolume(derived + "lidc2_chest.nhdr");
+    const ref_ptr<VolumeGrid> grid =
+        readVolume(std::string(VOLSG_DATA_DIR) + "/vtkjs-lidc2/lidc2_chest.nhdr");
     CHECK(grid->dimensions() == glm::ivec3(256, 256, 133));
     CHECK(grid->spacing() == glm::dvec3(1.40625, 1.40625, 2.5));
     CHECK(grid->geometry().known);

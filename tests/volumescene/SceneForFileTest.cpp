@@ -93,7 +93,7 @@ double difference(const glm::vec4& a, const glm::vec3& b) {
 TEST_CASE("file kinds come from names and magic bytes; binary bytes never reach a message") {
     CHECK(fileKindOf(data + "/derived/headsq_32x32x24_int16.nii.gz") == FileKind::Volume);
     CHECK(fileKindOf(data + "/derived/headsq_dicom") == FileKind::Volume);
-    CHECK(fileKindOf(data + "/derived/lidc2_chest.nhdr") == FileKind::Volume);
+    CHECK(fileKindOf(data + "/vtkjs-lidc2/lidc2_chest.nhdr") == FileKind::Volume);
     CHECK(fileKindOf(data + "/gltf/Duck/glTF-Binary/Duck.glb") == FileKind::Gltf);
     CHECK(fileKindOf(std::string(VOLSG_SOURCE_DIR) + "/viewer/view/showcase.iv") ==
           FileKind::Scene);

@@ -157,7 +157,7 @@ def write_nrrd(path):
                 "sizes: 256 256 133\n"
                 "space directions: (1.40625,0,0) (0,1.40625,0) (0,0,2.5)\n"
                 "space origin: (0,0,0)\nencoding: gzip\n"
-                "data file: ../vtkjs-lidc2/lidc2_256x256x133_uint8.raw.gz\n")
+                "data file: lidc2_256x256x133_uint8.raw.gz\n")
 
 
 def main():
@@ -165,7 +165,8 @@ def main():
     write_nifti1(os.path.join(HERE, "headsq_32x32x24_int16.nii.gz"), data)
     write_nifti2(os.path.join(HERE, "headsq_32x32x24_nifti2_be_scaled.nii.gz"), data)
     write_dicom(os.path.join(HERE, "headsq_dicom"), data)
-    write_nrrd(os.path.join(HERE, "lidc2_chest.nhdr"))
+    # Beside its data: a data file names files only inside its own folder.
+    write_nrrd(os.path.join(HERE, "..", "vtkjs-lidc2", "lidc2_chest.nhdr"))
 
 
 if __name__ == "__main__":
