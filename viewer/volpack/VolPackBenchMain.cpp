@@ -45,6 +45,13 @@ double threadCpuMs() {
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
+/// CPU time of the whole process in ms (every thread: the engine's, llvmpipe's).
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
 /// The first ShearWarpVolume under `node` (depth first), or null.
 ShearWarpVolume* findShearWarp(Node& node) {
     if (node.isA<ShearWarpVolume>()) return static_cast<ShearWarpVolume*>(&node);
@@ -99,8 +106,10 @@ struct CaseResult {
     std::string name;
     std::size_t volpackVoxels = 0;
     double volpack = 0.0, volpackCpu = 0.0;
-    double whole[2] = {0.0, 0.0}, engine[2] = {0.0, 0.0},
-           engineCpu[2] = {0.0, 0.0}; ///< 2, 1 threads
+    /// 2 and 1 threads: the whole frame (wall, process CPU), the engine (wall, CPU).
+    double whole[2] = {0.0, 0.0}, wholeCpu[2] = {0.0, 0.0};
+    double engine[2] = {0.0, 0.0}, engineCpu[2] = {0.0, 0.0};
+    double voxelsRead = 0.0, voxelsHidden = 0.0; ///< the node's, per frame (median)
     double volpackRmse = -1.0, nodeRmse = -1.0;
 };
 
@@ -172,15 +181,16 @@ struct NodeRun {
     ref_ptr<Node> root;
     ShearWarpVolume* node = nullptr;
     std::unique_ptr<volsg::Renderer> renderer;
-    bench::Samples whole[2], engine[2], engineCpu[2];
+    bench::Samples whole[2], wholeCpu[2], engine[2], engineCpu[2], voxelsRead, voxelsHidden;
 
-    Image render(const RenderOptions& options, const ref_ptr<Camera>& camera, int threads,
-                 int sliceStep) {
+    /// A frame into `image` (its storage reused from frame to frame, as VolPack's).
+    void render(const RenderOptions& options, const ref_ptr<Camera>& camera, int threads,
+                int sliceStep, Image& image) {
         node->threads = threads;
         RenderOptions o = options;
         o.camera = camera;
         o.interactive = sliceStep > 1; // the node's interactiveSliceStep is the step
-        return renderer->render(*root, o);
+        renderer->render(*root, o, image);
     }
 };
 
@@ -233,31 +243,37 @@ CaseResult runCase(const Case& c, const Settings& st) {
         // Untimed: every view once (the extraction and each principal axis's lists), then the
         // optimizer's pass over them, so no timed frame builds lists or competes with it.
         extractMs = bench::timeMs([&] {
+            Image image;
             for (const ref_ptr<Camera>& camera : views.cameras)
-                node->render(options, camera, 2, st.sliceStep);
+                node->render(options, camera, 2, st.sliceStep, image);
             node->node->waitForOptimizer();
         });
     }
     volpack->render(*views.cameras[0], st.size, st.size); // warm-up: buffers, tables
 
     bench::Samples volpackMs, volpackCpu;
-    Image kept, swKept;
+    Image kept, swKept, image, swImage;   // each renderer's image reused from frame to frame
     for (int i = 0; i < st.frames; ++i) { // alternating: all see the same machine load
         const ref_ptr<Camera>& camera = views.cameras[std::size_t(i)];
-        Image image;
         const double cpu0 = threadCpuMs();
         volpackMs.ms.push_back(
-            bench::timeMs([&] { image = volpack->render(*camera, st.size, st.size); }));
+            bench::timeMs([&] { volpack->render(*camera, st.size, st.size, image); }));
         volpackCpu.ms.push_back(threadCpuMs() - cpu0);
-        if (i == keepFrame) kept = std::move(image);
+        if (i == keepFrame) kept = image;
         if (!node) continue;
         for (int t = 0; t < 2; ++t) {
-            node->whole[t].ms.push_back(
-                bench::timeMs([&] { image = node->render(options, camera, 2 - t, st.sliceStep); }));
+            const double processCpu0 = processCpuMs();
+            node->whole[t].ms.push_back(bench::timeMs(
+                [&] { node->render(options, camera, 2 - t, st.sliceStep, swImage); }));
+            node->wholeCpu[t].ms.push_back(processCpuMs() - processCpu0);
             const ShearWarpStats& stats = node->node->lastFrame()->stats;
             node->engine[t].ms.push_back(stats.engineMs);
             node->engineCpu[t].ms.push_back(stats.engineCpuMs);
-            if (i == keepFrame && t == 0) swKept = std::move(image);
+            if (t == 0) {
+                node->voxelsRead.ms.push_back(double(stats.voxelsTouched));
+                node->voxelsHidden.ms.push_back(double(stats.voxelsHidden));
+            }
+            if (i == keepFrame && t == 0) swKept = swImage;
         }
     }
 
@@ -277,6 +293,7 @@ CaseResult runCase(const Case& c, const Settings& st) {
     if (node) {
         for (int t = 0; t < 2; ++t) {
             r.whole[t] = node->whole[t].median();
+            r.wholeCpu[t] = node->wholeCpu[t].median();
             r.engine[t] = node->engine[t].median();
             r.engineCpu[t] = node->engineCpu[t].median();
             const std::string threads = std::to_string(2 - t) + (t == 0 ? " threads" : " thread");
@@ -284,8 +301,13 @@ CaseResult runCase(const Case& c, const Settings& st) {
                      format("  (VolPack / node: %.2f)", r.volpack / std::max(r.whole[t], 1e-9)));
             printRow(("  engine alone (wall)"), node->engine[t],
                      format("  (VolPack / engine: %.2f)", r.volpack / std::max(r.engine[t], 1e-9)));
+            printRow("  process CPU", node->wholeCpu[t], "");
             printRow(("  engine alone (CPU)"), node->engineCpu[t], "");
         }
+        r.voxelsRead = node->voxelsRead.median();
+        r.voxelsHidden = node->voxelsHidden.median();
+        std::printf("  node: %.0f voxels read per frame, %.0f of them skipped as hidden (median)\n",
+                    r.voxelsRead, r.voxelsHidden);
         std::printf("  node: untimed first pass (extraction, lists, optimizer) %.0f ms\n",
                     extractMs);
     }
@@ -309,20 +331,28 @@ CaseResult runCase(const Case& c, const Settings& st) {
     return r;
 }
 
-/// The table of every case run (markdown), ratios VolPack / node.
+/// The tables of every case run (markdown): wall-clock medians with the ratios VolPack / node,
+/// then CPU medians (VolPack's thread; the node's engine over its threads and the process
+/// during its whole frame, llvmpipe's threads included) and the errors.
 void printSummary(const std::vector<CaseResult>& results) {
-    std::printf("\n| case | VolPack voxels | VolPack ms | node whole, 2 thr | VolPack / whole 2 "
-                "| engine 2 thr | node whole, 1 thr | VolPack / whole 1 | engine 1 thr | RMSE "
-                "VolPack | RMSE node |\n");
-    std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
-    const auto rmse = [](double v) { return v < 0.0 ? std::string("-") : format("%.2e", v); };
+    const auto ratio = [](double a, double b) { return a / std::max(b, 1e-9); };
+    std::printf("\n| case | VolPack | node whole, 2 thr | VolPack / whole 2 | engine 2 thr | node "
+                "whole, 1 thr | VolPack / whole 1 | engine 1 thr |\n");
+    std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (const CaseResult& r : results)
-        std::printf("| %s | %zu | %.2f | %.2f | **%.2f** | %.2f | %.2f | **%.2f** | %.2f | %s | %s "
-                    "|\n",
-                    r.name.c_str(), r.volpackVoxels, r.volpack, r.whole[0],
-                    r.volpack / std::max(r.whole[0], 1e-9), r.engine[0], r.whole[1],
-                    r.volpack / std::max(r.whole[1], 1e-9), r.engine[1],
-                    rmse(r.volpackRmse).c_str(), rmse(r.nodeRmse).c_str());
+        std::printf("| %s | %.2f | %.2f | **%.2f** | %.2f | %.2f | **%.2f** | %.2f |\n",
+                    r.name.c_str(), r.volpack, r.whole[0], ratio(r.volpack, r.whole[0]),
+                    r.engine[0], r.whole[1], ratio(r.volpack, r.whole[1]), r.engine[1]);
+    const auto rmse = [](double v) { return v < 0.0 ? std::string("-") : format("%.2e", v); };
+    std::printf("\n| case | VolPack voxels | node voxels read (hidden) | VolPack CPU | engine CPU "
+                "2 thr | process CPU whole 2 thr | engine CPU 1 thr | RMSE VolPack | RMSE node "
+                "|\n");
+    std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    for (const CaseResult& r : results)
+        std::printf("| %s | %zu | %.0f (%.0f) | %.2f | %.2f | %.2f | %.2f | %s | %s |\n",
+                    r.name.c_str(), r.volpackVoxels, r.voxelsRead, r.voxelsHidden, r.volpackCpu,
+                    r.engineCpu[0], r.wholeCpu[0], r.engineCpu[1], rmse(r.volpackRmse).c_str(),
+                    rmse(r.nodeRmse).c_str());
 }
 
 /// `--raw`'s options: the file, then --dims, --spacing, --tf.

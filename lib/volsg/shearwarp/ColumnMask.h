@@ -40,7 +40,7 @@ public:
         load();
     }
 
-    bool next(int& begin, int& end) {
+    [[gnu::always_inline]] bool next(int& begin, int& end) {
         for (;;) {
             if (w_ > w1_) {
                 if (runStart_ < 0) return false;
@@ -72,7 +72,7 @@ public:
     }
 
 private:
-    void load() {
+    [[gnu::always_inline]] void load() {
         if (w_ > w1_) return;
         m_ = coverage(a_, w_) | coverage(b_, w_);
         if (w_ == lo_ >> 6) m_ &= ~Word(0) << (lo_ & 63);

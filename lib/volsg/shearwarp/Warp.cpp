@@ -56,6 +56,7 @@ void warpRow(const WarpJob& job, int y, const glm::dvec2& rowStart, const glm::d
     glm::vec4* out = job.out + std::size_t(y) * std::size_t(f.width);
     for (int x = xBegin; x < xEnd; ++x) {
         glm::dvec2 uv = rowStart + double(x) * perPixel;
+        out[x] = glm::vec4(0.0f); // when skipped below (it may hold the last frame's pixel)
         if (job.clampU) {
             if (uv.x < uLo - 0.5 || uv.x > uHi + 0.5) continue;
             uv.x = std::clamp(uv.x, uLo, uHi);
@@ -85,17 +86,34 @@ void warpRow(const WarpJob& job, int y, const glm::dvec2& rowStart, const glm::d
     }
 }
 
+/// The last frame's pixels of row y outside the columns [xBegin, xEnd) the warp writes: image
+/// 0; its depth (all of the row's stale part: the warp writes depth only where a Surface hit
+/// lies) 1.
+void clearStale(const WarpJob& job, int y, int xBegin, int xEnd) {
+    const glm::ivec4 r = job.stale.rect;
+    if (y < r.y || y >= r.w) return;
+    const std::size_t row = std::size_t(y) * std::size_t(job.factorisation->width);
+    glm::vec4* out = job.out + row;
+    if (xBegin >= xEnd) xBegin = xEnd = r.z; // nothing written: all of it
+    std::fill(out + r.x, out + std::max(r.x, std::min(r.z, xBegin)), glm::vec4(0.0f));
+    std::fill(out + std::min(r.z, std::max(r.x, xEnd)), out + r.z, glm::vec4(0.0f));
+    if (job.stale.depth) std::fill(job.windowDepth + row + r.x, job.windowDepth + row + r.z, 1.0f);
+}
+
 } // namespace
 
 glm::ivec4 warpRows(const WarpJob& job, int y0, int y1) {
     const Factorisation& f = *job.factorisation;
     const glm::dvec2 perPixel(f.unwarp[0]); // (u, v) per output pixel along x
     glm::ivec4 drawn(f.width, f.height, 0, 0);
-    if (!f.warpValid) return drawn;
     for (int y = y0; y < y1; ++y) {
         const glm::dvec2 rowStart(f.unwarp * glm::dvec3(0.0, y, 1.0));
         int xBegin = 0, xEnd = 0;
-        if (!warpSpan(job, rowStart, perPixel, xBegin, xEnd)) continue;
+        if (!f.warpValid || !warpSpan(job, rowStart, perPixel, xBegin, xEnd)) {
+            clearStale(job, y, 0, 0);
+            continue;
+        }
+        clearStale(job, y, xBegin, xEnd);
         drawn = glm::ivec4(std::min(drawn.x, xBegin), std::min(drawn.y, y), std::max(drawn.z, xEnd),
                            std::max(drawn.w, y + 1));
         warpRow(job, y, rowStart, perPixel, xBegin, xEnd);
