@@ -237,6 +237,7 @@ struct WarpJob {
     glm::vec4* out;      ///< output image
     float* windowDepth;  ///< output depth
     StaleOutput stale;   ///< cleared where the warp does not write
+    SimdLevel simd;      ///< Avx2: four pixels' coordinates at once (the same pixels)
 };
 
 /// The warp of output rows [y0, y1) (and the clear of the stale pixels in them); returns the
