@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -355,6 +356,14 @@ void printSummary(const std::vector<CaseResult>& results) {
                     rmse(r.nodeRmse).c_str());
 }
 
+/// A number, or an Error naming the option.
+double parseNumber(const std::string& word, const std::string& option) {
+    char* end = nullptr;
+    const double v = std::strtod(word.c_str(), &end);
+    if (word.empty() || *end != '\0') throw Error(option + ": '" + word + "' is not a number");
+    return v;
+}
+
 /// `--raw`'s options: the file, then --dims, --spacing, --tf.
 void addRawOptions(cli::Options& table, Settings& st) {
     const auto raw = [&st]() -> RawInput& {
@@ -364,7 +373,7 @@ void addRawOptions(cli::Options& table, Settings& st) {
     const auto three = [](cli::Arguments& words, const std::string& option) {
         glm::dvec3 v;
         for (int i = 0; i < 3; ++i)
-            v[i] = std::stod(words.value(option));
+            v[i] = parseNumber(words.value(option), option);
         return v;
     };
     table.value("--raw", [raw](const std::string& v) { raw().file = v; })
@@ -399,8 +408,8 @@ int run(cli::Arguments& args) {
     st.inputs.data = VOLSG_DATA_DIR;
     std::vector<std::string> compare;
     bool volpackOnly = false, noReference = false, legacyShearWarp = false;
-    const auto number = [](double& target) {
-        return [&target](const std::string& v) { target = std::stod(v); };
+    const auto number = [](double& target, const char* option) {
+        return [&target, option](const std::string& v) { target = parseNumber(v, option); };
     };
     cli::Options table;
     table.value("--case", [&](const std::string& which) { st.cases.push_back(which); })
@@ -412,10 +421,14 @@ int run(cli::Arguments& args) {
         .value("--data", [&](const std::string& v) { st.inputs.data = v; })
         .flag("--reference", st.reference) // the default; kept for older command lines
         .flag("--no-reference", noReference)
-        .value("--tolerance", number(st.tolerance))
+        .value("--tolerance", number(st.tolerance, "--tolerance"))
         .value("--slice-step",
-               [&](const std::string& v) { st.sliceStep = std::clamp(std::stoi(v), 1, 16); })
-        .value("--max-ray-opacity", number(st.maxRayOpacity))
+               [&](const std::string& v) {
+                   const double step = parseNumber(v, "--slice-step");
+                   if (!(step >= 1.0 && step <= 16.0)) throw Error("--slice-step: 1 to 16");
+                   st.sliceStep = int(step);
+               })
+        .value("--max-ray-opacity", number(st.maxRayOpacity, "--max-ray-opacity"))
         .flag("--no-pixel-shift", st.pixelShift, false)
         .flag("--shearwarp", legacyShearWarp) // the default; kept for older command lines
         .flag("--volpack-only", volpackOnly)
