@@ -167,14 +167,20 @@ void clearLine(SplatLine* line) {
     if (!line) return;
     if (line->lo < line->hi) {
         int begin = 0, end = 0;
-        for (columns::Runs runs(line->written, nullptr, line->lo, line->hi); runs.next(begin, end);)
-            std::memset(static_cast<void*>(line->pixels + begin), 0,
-                        std::size_t(end - begin) * sizeof(glm::vec4));
+        if (4 * line->voxels >= 3 * (line->hi - line->lo)) // mostly written: one memset
+            std::memset(static_cast<void*>(line->pixels + line->lo), 0,
+                        std::size_t(line->hi - line->lo) * sizeof(glm::vec4));
+        else
+            for (columns::Runs runs(line->written, nullptr, line->lo, line->hi);
+                 runs.next(begin, end);)
+                std::memset(static_cast<void*>(line->pixels + begin), 0,
+                            std::size_t(end - begin) * sizeof(glm::vec4));
         std::fill(line->written + (line->lo >> 6), line->written + ((line->hi - 1) >> 6) + 1,
                   columns::Word(0));
     }
     line->lo = kEmptyLo;
     line->hi = 0;
+    line->voxels = 0;
 }
 
 /// Composites band row `row` from line a (weight wa) and line b (weight wb; either may be
@@ -209,9 +215,14 @@ void compositeRow(const RowTarget& t, int row, const SplatLine* a, float wa, Spl
                               t.object,
                               slice,
                               t.slice->zSlice};
-        // Only the columns the lines wrote: a row of scattered voxels costs its voxels.
-        UnderComposite::compositeWritten(job.simd, target, pa, wa, a ? a->written : nullptr, pb, wb,
-                                         b ? b->written : nullptr, lo, hi);
+        // Only the columns the lines wrote: a row of scattered voxels costs its voxels. Rows
+        // whose voxels fill most of [lo, hi) take the plain loop (the same pixels).
+        const int voxels = std::max(a ? a->voxels : 0, b ? b->voxels : 0);
+        if (4 * voxels >= 3 * (hi - lo))
+            UnderComposite::composite(job.simd, target, pa, wa, pb, wb, lo, hi);
+        else
+            UnderComposite::compositeWritten(job.simd, target, pa, wa, a ? a->written : nullptr, pb,
+                                             wb, b ? b->written : nullptr, lo, hi);
     } else {
         const Factorisation& f = *job.factorisation;
         const TwoLevelRow target{m.global + rowStart,

@@ -55,6 +55,7 @@ template <bool Fresh, bool SkipHidden, SplatLookup Lookup>
     int pendingCol = -2;
     int firstCol = std::numeric_limits<int>::max(), lastCol = -1;
     columns::Word* const written = out.written;
+    int marked = 0;
     for (std::uint32_t i = row.begin; i < row.end; ++i) {
         const std::uint32_t v = packed[i];
         const unsigned va = PackedVoxel::a(v);
@@ -95,6 +96,7 @@ template <bool Fresh, bool SkipHidden, SplatLookup Lookup>
         // skipping (its range must not grow) need to leave it out.
         if ((!Fresh || SkipHidden) && colour[3] <= 0.0f) continue;
         columns::mark(written, col);
+        ++marked;
         // Its shares of the two columns; face voxels (only a row's first or last: sorted by a)
         // weigh their own.
         V4 share0 = left * colour, share1 = right * colour;
@@ -121,6 +123,7 @@ template <bool Fresh, bool SkipHidden, SplatLookup Lookup>
             storeV4(line[col + 1], loadV4(line[col + 1]) + share1);
         }
     }
+    out.voxels += marked;
     if (pendingCol >= 0) {
         storeV4(line[pendingCol], pending);
         lastCol = pendingCol - 1;

@@ -55,6 +55,7 @@ struct SplatLine {
     glm::vec4* pixels;
     int lo, hi;
     std::uint64_t* written;
+    int voxels = 0; ///< voxels splatted into it (marked)
 };
 
 /// The hidden-voxel state of one voxel row, carried from its first part to its second: voxels
