@@ -96,7 +96,7 @@ Tables randomTables(std::mt19937& rng) {
 /// their colour is looked up), the colour from the lookup, transparent voxels left out, (1 - fu) C
 /// and fu C (face weights on the outer columns) added to the line, the left column marked.
 void splatByDefinition(const SplatRow& r, std::vector<glm::vec4>& line, int& lo, int& hi,
-                       std::vector<bool>& marked, SplatSkip& skip,
+                       std::vector<bool>& marked, int& voxels, SplatSkip& skip,
                        const std::vector<std::int32_t>* openA,
                        const std::vector<std::int32_t>* openB) {
     for (std::uint32_t i = r.begin; i < r.end; ++i) {
@@ -141,6 +141,7 @@ void splatByDefinition(const SplatRow& r, std::vector<glm::vec4>& line, int& lo,
         lo = std::min(lo, col);
         hi = std::max(hi, col + 2);
         marked[std::size_t(col)] = true;
+        ++voxels;
     }
 }
 
@@ -243,14 +244,18 @@ TEST_CASE("every row splat kernel gives the definition's line bit for bit") {
                         std::vector<glm::vec4> expected = startLine;
                         int expectedLo = startLo, expectedHi = startHi;
                         std::vector<bool> expectedMarks = markedColumns(startMask, width);
+                        const int startVoxels = fresh ? 0 : int(rng() % 50);
+                        int expectedVoxels = startVoxels;
                         SplatSkip expectedSkip = startSkip;
                         splatByDefinition(row, expected, expectedLo, expectedHi, expectedMarks,
-                                          expectedSkip, row.skipHidden && hasA ? &linksA : nullptr,
+                                          expectedVoxels, expectedSkip,
+                                          row.skipHidden && hasA ? &linksA : nullptr,
                                           row.skipHidden && hasB ? &linksB : nullptr);
                         for (SimdLevel level : levels) {
                             std::vector<glm::vec4> got = startLine;
                             std::vector<std::uint64_t> mask = startMask;
-                            SplatLine line{got.data(), startLo, startHi, mask.data() + 1};
+                            SplatLine line{got.data(), startLo, startHi, mask.data() + 1,
+                                           startVoxels};
                             SplatSkip skip = startSkip;
                             std::vector<std::int32_t> openA = linksA, openB = linksB;
                             row.openA = row.skipHidden && hasA ? openA.data() : nullptr;
@@ -263,6 +268,7 @@ TEST_CASE("every row splat kernel gives the definition's line bit for bit") {
                             CHECK(line.lo == expectedLo);
                             CHECK(line.hi == expectedHi);
                             CHECK(markedColumns(mask, width) == expectedMarks);
+                            CHECK(line.voxels == expectedVoxels);
                             CHECK(mask.front() == 0u); // the word before is only read
                             CHECK(skip.hidden == expectedSkip.hidden);
                             CHECK(skip.hiddenBefore == expectedSkip.hiddenBefore);
