@@ -243,15 +243,30 @@ const RenderStats& Renderer::stats() const {
 }
 
 Image Renderer::render(Node& root, const RenderOptions& options) {
+    Image image;
+    render(root, options, image);
+    return image;
+}
+
+void Renderer::render(Node& root, const RenderOptions& options, Image& into) {
     const BoundFramebuffers caller;
     impl_->drawFrame(root, options);
-    Image image(options.width, options.height);
+    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
+    if (into.pixels.size() != pixels) into.pixels.resize(pixels); // every pixel is read below
+    into.width = options.width;
+    into.height = options.height;
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_FLOAT, image.pixels.data());
-    flipRows(image.pixels, options.width, options.height);
+    // GL's rows run bottom-up, the Image's top-down: Mesa's GL_MESA_pack_invert reads them in
+    // the Image's order (no second pass over the pixels); elsewhere they are swapped after.
+    const bool invert = GLAD_GL_MESA_pack_invert != 0;
+    if (invert) glPixelStorei(GL_PACK_INVERT_MESA, GL_TRUE);
+    glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_FLOAT, into.pixels.data());
+    if (invert)
+        glPixelStorei(GL_PACK_INVERT_MESA, GL_FALSE);
+    else
+        flipRows(into.pixels, options.width, options.height);
     checkGlError("Renderer::render");
-    return image;
 }
 
 void Renderer::renderToBoundFramebuffer(Node& root, const RenderOptions& options) {

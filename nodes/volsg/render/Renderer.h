@@ -63,6 +63,9 @@ public:
 
     /// Renders offscreen and reads the linear float result back.
     Image render(Node& root, const RenderOptions& options);
+    /// The same into `into`, whose storage is reused when it has the size already (a caller
+    /// rendering frame after frame pays no allocation and no page faults for the image).
+    void render(Node& root, const RenderOptions& options, Image& into);
     /// Renders into the framebuffer bound now (a window's back buffer), same image.
     void renderToBoundFramebuffer(Node& root, const RenderOptions& options);
 
