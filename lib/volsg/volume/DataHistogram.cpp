@@ -12,11 +12,11 @@ namespace volsg {
 namespace {
 
 /// Opacities (per reference length, docs/SCENE-FORMAT.md section 4) at the ramp's points, at
-/// the 50th, 85th and 97th percentiles of the voxels beyond the background: the typical
-/// structure (soft tissue, hundreds of voxels deep) faint, the less common (bone) visible, the
-/// rare densest solid enough to hide what is behind it.
-constexpr double typicalOpacity = 0.01, commonOpacity = 0.1, denseOpacity = 0.6;
-constexpr double typicalShare = 0.5, commonShare = 0.85, denseShare = 0.97;
+/// the 50th and 97th percentiles of the voxels beyond the background: the typical structure
+/// (soft tissue, hundreds of voxels deep) faint, the rare densest solid enough to hide what is
+/// behind it.
+constexpr double typicalOpacity = 0.01, denseOpacity = 0.6;
+constexpr double typicalShare = 0.5, denseShare = 0.97;
 
 /// A bin belongs to the background peak while it holds at least this share of the peak's count.
 constexpr double peakShoulder = 0.05;
@@ -121,8 +121,10 @@ TransferFunction1D transferFunctionFromHistogram(const DataHistogram& h) {
     if (above >= below && right + 1 < bins) {
         // Background dark (air): transparent up to the peak's end, then rising.
         const double start = v(h.lo + double(right + 1) * h.binWidth());
-        const double typical = std::max(start, v(percentileValue(h, right + 1, bins - 1, 0.5)));
-        const double dense = std::max(typical, v(percentileValue(h, right + 1, bins - 1, 0.97)));
+        const double typical =
+            std::max(start, v(percentileValue(h, right + 1, bins - 1, typicalShare)));
+        const double dense =
+            std::max(typical, v(percentileValue(h, right + 1, bins - 1, denseShare)));
         alpha = {{0.0, 0.0},
                  {start, 0.0},
                  {typical, typicalOpacity},
@@ -131,8 +133,8 @@ TransferFunction1D transferFunctionFromHistogram(const DataHistogram& h) {
     } else if (left > 0) {
         // Background bright: the same, mirrored.
         const double start = v(h.lo + double(left) * h.binWidth());
-        const double typical = std::min(start, v(percentileValue(h, left - 1, 0, 0.5)));
-        const double dense = std::min(typical, v(percentileValue(h, left - 1, 0, 0.97)));
+        const double typical = std::min(start, v(percentileValue(h, left - 1, 0, typicalShare)));
+        const double dense = std::min(typical, v(percentileValue(h, left - 1, 0, denseShare)));
         alpha = {{0.0, denseOpacity},
                  {dense, denseOpacity},
                  {typical, typicalOpacity},
