@@ -2,6 +2,7 @@
 #include <volsg/nodes/Light.h>
 #include <volsg/render/BuiltinRendering.h>
 #include <volsg/render/RenderAction.h>
+#include <volsg/render/RenderCaching.h>
 
 #include <algorithm>
 #include <string>
@@ -22,6 +23,7 @@ ActionMethods& RenderAction::methods() {
 }
 
 void RenderAction::dispatch(Node& node) {
+    if (frame_.recording) noteForCache(*frame_.recording, node);
     methods().apply(*this, node);
 }
 

@@ -8,8 +8,10 @@
 #include <volsg/render/RenderTarget.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/render/ShapeRenderer.h>
+#include <volsg/render/SharedMeshes.h>
 
 #include <algorithm>
+#include <atomic>
 
 namespace volsg {
 
@@ -117,6 +119,8 @@ struct Renderer::Impl {
     RenderTarget target;
     RenderStats stats;
     bool inViewGroup = false; ///< the cache frame spans several renders (beginViewGroup)
+    /// The last frame drew a volume: this one starts on the float target.
+    bool floatTarget = false;
 
     /// Draws one frame into `target` (left bound).
     void drawFrame(Node& root, const RenderOptions& options);
@@ -151,7 +155,8 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
                                     : glm::dvec4(glm::dvec3(eyeToWorld[3]), 1.0);
     view.headlight = !survey.hasLight();
 
-    target.resize(options.width, options.height);
+    const bool floatColor = floatTarget || !options.debug.byteTarget;
+    target.resize(options.width, options.height, floatColor);
     const bool multisample = target.setMultisample(options.samples) > 1;
     if (multisample)
         target.bindMultisample();
@@ -173,6 +178,9 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
                        options.interactive,
                        options.interactivePlaneScale,
                        options.debug};
+    static std::atomic<std::uint64_t> renders{0};
+    frame.renderSerial = ++renders;
+    shapes.setBatching(options.debug.batchShapes);
     RenderAction action(frame);
     for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
         // The multisampled opaque pass is resolved into the target for everything after it.
@@ -182,8 +190,18 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
         shapes.beginPass();
         action.setPass(pass);
         action.apply(root);
+        if (pass == RenderPass::Opaque) shapes.flushOpaque();
         if (pass == RenderPass::Transparent) shapes.drawQueuedTransparent();
+        if (pass == RenderPass::Opaque && frame.floatTargetNeeded && !floatColor) {
+            // A volume on an 8-bit target: start again on the float one (the opaque pass
+            // reaches every node the volume pass does, so nothing has been composited yet).
+            shapes.endFrame();
+            floatTarget = true;
+            drawFrame(root, options);
+            return;
+        }
     }
+    floatTarget = frame.floatTargetNeeded;
     shapes.endFrame();
     if (!inViewGroup) cache.endFrame();
 
@@ -194,6 +212,10 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     stats.programBuilds = shapes.programBuilds();
     stats.cachedEntries = cache.size();
     stats.shapeDraws = shapes.drawsLastFrame();
+    stats.batches = shapes.batchesLastFrame();
+    stats.batchedShapes = shapes.batchedShapesLastFrame();
+    stats.meshBytes = cache.shared<SharedMeshes>().bytes();
+    stats.instanceBytes = shapes.instanceBytes();
 }
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
@@ -232,14 +254,26 @@ const RenderStats& Renderer::stats() const {
 }
 
 Image Renderer::render(Node& root, const RenderOptions& options) {
+    renderFrame(root, options);
+    return readImage();
+}
+
+void Renderer::renderFrame(Node& root, const RenderOptions& options) {
     const BoundFramebuffers caller;
     impl_->drawFrame(root, options);
-    Image image(options.width, options.height);
+}
+
+Image Renderer::readImage() const {
+    const RenderTarget& target = impl_->target;
+    if (target.width() == 0) return {};
+    const BoundFramebuffers caller;
+    Image image(target.width(), target.height());
+    target.framebuffer().bind(GL_READ_FRAMEBUFFER);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_FLOAT, image.pixels.data());
-    flipRows(image.pixels, options.width, options.height);
-    checkGlError("Renderer::render");
+    glReadPixels(0, 0, target.width(), target.height(), GL_RGBA, GL_FLOAT, image.pixels.data());
+    flipRows(image.pixels, target.width(), target.height());
+    checkGlError("Renderer::readImage");
     return image;
 }
 
