@@ -60,7 +60,7 @@ const char* usage =
     "                   Coin is found; --read-back: volsg's frame reads the float image back)\n"
     "       every form also takes the debug switches [--no-empty-cells]\n"
     "                   [--no-texture-staging] [--max-3d-texture N] [--scalar-kernels]\n"
-    "                   [--float-target] [--no-render-caching] [--no-batching]\n"
+    "                   [--byte-target] [--no-render-caching] [--no-batching]\n"
     "  --error         also compare K of the frames with the reference ray caster (same\n"
     "                  views, same size): RMSE, PSNR and max abs error\n"
     "  --error-frames  how many frames to compare (default: all, at most 4)\n"
@@ -93,7 +93,7 @@ const char* usage =
     "                        GL_MAX_3D_TEXTURE_SIZE)\n"
     "  --scalar-kernels      ShearWarpVolume: the scalar kernels, not the widest vector ones\n"
     "                        this CPU runs\n"
-    "  --float-target        frames without volumes on the float target, not the 8-bit one\n"
+    "  --byte-target         frames without volumes on an 8-bit target, not the float one\n"
     "  --no-render-caching   Separators traverse every frame (no render caches)\n"
     "  --no-batching         opaque shapes drawn one by one, not as instanced batches\n"
     "  --suite coin    the same files through Coin3D (SoGLRenderAction, caching AUTO, +\n"
@@ -373,7 +373,7 @@ int run(cli::Arguments& args) {
         .flag("--no-texture-staging", st.options.debug.textureStaging, false)
         .integer("--max-3d-texture", st.options.debug.max3DTextureSize, 2, 16384)
         .flag("--scalar-kernels", st.options.debug.vectorKernels, false)
-        .flag("--float-target", st.options.debug.byteTarget, false)
+        .flag("--byte-target", st.options.debug.byteTarget)
         .flag("--no-render-caching", st.options.debug.renderCaching, false)
         .flag("--no-batching", st.options.debug.batchShapes, false);
     const auto scene = [&](const std::string& a) {

@@ -359,8 +359,10 @@ TEST_CASE("the same node added twice under two Transforms draws twice") {
         CHECK(glm::vec3(image.at(p.x, p.y)) == glm::vec3(0.0f, 0.0f, 1.0f));
     }
     CHECK(isBackground(image, pixelAt(0.0, 0.0, 8.0, 80)));
-    CHECK(gl.renderer.stats().shapeDraws == 2);
-    CHECK(gl.renderer.stats().meshUploads == 1); // one mesh, drawn twice
+    // One mesh, drawn twice: one instanced draw of two shapes.
+    CHECK(gl.renderer.stats().shapeDraws == 1);
+    CHECK(gl.renderer.stats().batchedShapes == 2);
+    CHECK(gl.renderer.stats().meshUploads == 1);
 }
 
 TEST_CASE("a sphere under a DirectionalLight follows Lambert's law") {

@@ -82,8 +82,8 @@ CoinScene::CoinScene(const std::string& path, int width, int height)
 
 CoinScene::~CoinScene() {
     Impl& s = *impl_;
-    if (s.context) OSMesaMakeCurrent(s.context, s.buffer.data(), GL_UNSIGNED_BYTE, s.width,
-                                     s.height);
+    if (s.context)
+        OSMesaMakeCurrent(s.context, s.buffer.data(), GL_UNSIGNED_BYTE, s.width, s.height);
     delete s.render; // frees Coin's GL caches while the context is current
     if (s.root) s.root->unref();
     if (s.context) {

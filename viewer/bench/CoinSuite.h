@@ -17,8 +17,8 @@ struct CoinSuiteSettings {
     std::vector<std::string> cases;
     /// The inventor-data models of the "models" case (files, or folders searched for *.iv).
     std::vector<std::string> models;
-    std::string keepDir; ///< the scene files and both renderers' last frames go there
-    RenderDebug debug;   ///< volsg's switches (--float-target, ...)
+    std::string keepDir;   ///< the scene files and both renderers' last frames go there
+    RenderDebug debug;     ///< volsg's switches (--float-target, ...)
     bool readBack = false; ///< volsg's frame reads the image back (Renderer::render)
 };
 

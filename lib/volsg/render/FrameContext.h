@@ -3,6 +3,7 @@
 // target, the per-context caches and the shape renderer. Traversals (RenderAction, above the
 // node types) fill it; engines in lib/ read it and know nothing of nodes.
 
+#include <cstddef>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -64,8 +65,9 @@ struct RenderDebug {
     int max3DTextureSize = 0;
     /// ShearWarpVolume: the widest vector kernels this CPU runs (false: the scalar ones).
     bool vectorKernels = true;
-    /// Frames without volumes draw into an 8-bit target (false: always the float one).
-    bool byteTarget = true;
+    /// Frames without volumes draw into an 8-bit target, as Coin's window does (off by
+    /// default: it quantises colours to 1/255, and saved nothing measurable on llvmpipe).
+    bool byteTarget = false;
     /// Separators whose subgraph does not change replay what they drew (render caches).
     bool renderCaching = true;
     /// Opaque shapes are drawn batched: instanced draws grouped by state (ShapeRenderer).
@@ -95,6 +97,8 @@ struct FrameContext {
     std::uint64_t renderSerial = 0;
     /// The render caches being recorded (innermost), or null (nodes/volsg/render/RenderCaching.h).
     RenderRecording* recording = nullptr;
+    /// Shapes replayed from render caches in this render (all passes).
+    std::size_t replayedShapes = 0;
 };
 
 } // namespace volsg

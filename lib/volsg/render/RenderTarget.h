@@ -9,10 +9,10 @@ namespace volsg {
 
 /// A framebuffer with a colour texture, GL_RGBA32F (linear values, unclamped, so blending and
 /// volume compositing do not quantise) or GL_RGBA8 (what a window holds: a quarter of the
-/// bytes to clear, blend and resolve, for frames without volumes), and a GL_DEPTH_COMPONENT32F depth texture (textures,
-/// not renderbuffers, so that later passes can sample the opaque depth). Sampling the depth
-/// texture while it is attached to the bound framebuffer is a feedback loop (undefined in
-/// GL): copy it first, or detach it for that draw.
+/// bytes to clear, blend and resolve, for frames without volumes), and a GL_DEPTH_COMPONENT32F
+/// depth texture (textures, not renderbuffers, so that later passes can sample the opaque depth).
+/// Sampling the depth texture while it is attached to the bound framebuffer is a feedback loop
+/// (undefined in GL): copy it first, or detach it for that draw.
 class RenderTarget {
 public:
     /// Makes the target width x height with float (GL_RGBA32F) or 8-bit (GL_RGBA8) colour,
@@ -28,10 +28,11 @@ public:
     const Texture& colorTexture() const { return color_; }
     const Texture& depthTexture() const { return depth_; }
 
-    /// A multisampled companion of the same size (colour of the same format and GL_DEPTH_COMPONENT32F
-    /// depth renderbuffers) for a pass drawn with multisample antialiasing, then resolved into
-    /// this target. `samples` is clamped to what GL allows for both formats (GL_MAX_SAMPLES,
-    /// 4 on llvmpipe); <= 1 frees it. Call after resize(). Returns the sample count in use.
+    /// A multisampled companion of the same size (colour of the same format and
+    /// GL_DEPTH_COMPONENT32F depth renderbuffers) for a pass drawn with multisample antialiasing,
+    /// then resolved into this target. `samples` is clamped to what GL allows for both formats
+    /// (GL_MAX_SAMPLES, 4 on llvmpipe); <= 1 frees it. Call after resize(). Returns the sample
+    /// count in use.
     int setMultisample(int samples);
     int samples() const { return samples_; }
     /// Binds the multisampled framebuffer for drawing and reading (setMultisample first).

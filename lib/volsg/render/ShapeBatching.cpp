@@ -30,8 +30,7 @@ std::uint64_t hashBytes(const void* data, std::size_t bytes) {
 } // namespace
 
 int ShapeRenderer::internScope(const ShapeLook& look, bool lit) {
-    const std::span<const SceneLight> lights =
-        lit ? look.lights : std::span<const SceneLight>();
+    const std::span<const SceneLight> lights = lit ? look.lights : std::span<const SceneLight>();
     // Shapes in a row mostly see the same lights and planes: look back a few scopes only.
     const int n = int(scopes_.size());
     for (int i = n - 1; i >= std::max(0, n - 4); --i) {
@@ -43,8 +42,8 @@ int ShapeRenderer::internScope(const ShapeLook& look, bool lit) {
             continue;
         return i;
     }
-    scopes_.push_back({{lights.begin(), lights.end()},
-                       {look.clipPlanes.begin(), look.clipPlanes.end()}});
+    scopes_.push_back(
+        {{lights.begin(), lights.end()}, {look.clipPlanes.begin(), look.clipPlanes.end()}});
     return n;
 }
 
@@ -61,8 +60,8 @@ void ShapeRenderer::batch(const GpuMesh& gpu, const ShapeLook& look) {
     key.lineWidth = look.lineWidth;
     key.pointSize = look.pointSize;
     key.lit = lit;
-    key.cull = look.cullBackFaces && gpu.mode == GL_TRIANGLES &&
-               look.style == ShapeLook::Style::Filled;
+    key.cull =
+        look.cullBackFaces && gpu.mode == GL_TRIANGLES && look.style == ShapeLook::Style::Filled;
     const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
     key.frontClockwise = look.clockwise != mirrored;
     if (key.texture) {
@@ -141,7 +140,8 @@ void ShapeRenderer::flushOpaque() {
             glVertexAttribDivisor(4 + column, 1);
         }
         for (GLuint k = 0; k < 4; ++k) {
-            const std::size_t offset = offsetof(Instance, emissiveShininess) + k * sizeof(glm::vec4);
+            const std::size_t offset =
+                offsetof(Instance, emissiveShininess) + k * sizeof(glm::vec4);
             glEnableVertexAttribArray(8 + k);
             glVertexAttribPointer(8 + k, 4, GL_FLOAT, GL_FALSE, stride,
                                   reinterpret_cast<const void*>(base + offset));

@@ -42,9 +42,9 @@ ShapeRenderer::ShapeRenderer() {
     maxClipPlanes_ = queryMaxClipPlanes(kMaxClipPlanes);
     program_ = shaders::surfaceProgram(shaders::shapeVertex, shaders::shapeFragment, maxClipPlanes_,
                                        "shape");
-    instancedProgram_ = shaders::surfaceProgram(shaders::shapeVertex, shaders::shapeFragment,
-                                                maxClipPlanes_, "instanced shape",
-                                                "#define INSTANCED\n");
+    instancedProgram_ =
+        shaders::surfaceProgram(shaders::shapeVertex, shaders::shapeFragment, maxClipPlanes_,
+                                "instanced shape", "#define INSTANCED\n");
     programBuilds_ += 2;
     loc_ = locate(program_);
     instancedLoc_ = locate(instancedProgram_);
@@ -73,8 +73,8 @@ void ShapeRenderer::beginFrame(const RenderView& view) {
     const glm::mat4 viewProjection(view.projection * view.view);
     const glm::vec4 viewer(view.viewer);
     const glm::mat4 eye(view.view);
-    for (const auto& [program, at] : {std::pair{&program_, &loc_},
-                                      std::pair{&instancedProgram_, &instancedLoc_}}) {
+    for (const auto& [program, at] :
+         {std::pair{&program_, &loc_}, std::pair{&instancedProgram_, &instancedLoc_}}) {
         program->use();
         glUniformMatrix4fv(at->viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
         glUniform4fv(at->viewer, 1, glm::value_ptr(viewer));

@@ -201,7 +201,7 @@ private:
     };
     struct Batch {
         BatchKey key;
-        DrawItem item; ///< the first shape's, for the shared uniforms
+        DrawItem item;                    ///< the first shape's, for the shared uniforms
         std::vector<std::size_t> members; ///< into batched_
     };
     struct Batched {

@@ -1,5 +1,5 @@
-#include <volsg/render/SharedMeshes.h>
 #include <volsg/render/ShapeRenderer.h>
+#include <volsg/render/SharedMeshes.h>
 
 #include <cstring>
 #include <iterator>

@@ -7,8 +7,9 @@ namespace volsg::shaders {
 
 /// Vertex stage, after the prelude: the attributes both programs have (position 0, normal 1,
 /// first texture coordinates 3), the model (a uniform, or with INSTANCED defined a per-instance
-/// attribute at 4), normal and view-projection matrices and the clip planes; transformVertex() writes the world position and normal, gl_ClipDistance and
-/// gl_Position, and returns the world position. The program sets vColor.
+/// attribute at 4), normal and view-projection matrices and the clip planes; transformVertex()
+/// writes the world position and normal, gl_ClipDistance and gl_Position, and returns the world
+/// position. The program sets vColor.
 inline constexpr const char* surfaceVertex = R"GLSL(
 #ifdef INSTANCED
 layout(location = 4) in mat4 aModel; // per instance (locations 4 to 7)

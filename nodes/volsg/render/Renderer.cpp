@@ -213,6 +213,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     stats.cachedEntries = cache.size();
     stats.shapeDraws = shapes.drawsLastFrame();
     stats.batches = shapes.batchesLastFrame();
+    stats.replayedShapes = frame.replayedShapes;
     stats.batchedShapes = shapes.batchedShapesLastFrame();
     stats.meshBytes = cache.shared<SharedMeshes>().bytes();
     stats.instanceBytes = shapes.instanceBytes();

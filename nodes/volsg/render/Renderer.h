@@ -45,6 +45,7 @@ struct RenderStats {
     std::size_t shapeDraws = 0;      ///< shape draw calls in the last frame
     std::size_t batches = 0;         ///< instanced draws of batched opaque shapes, last frame
     std::size_t batchedShapes = 0;   ///< the shapes those draws drew
+    std::size_t replayedShapes = 0;  ///< shapes drawn from Separators' render caches, last frame
     std::size_t meshBytes = 0;       ///< GPU bytes of the (shared) shape meshes alive
     std::size_t instanceBytes = 0;   ///< GPU bytes of the per-instance buffer
 };

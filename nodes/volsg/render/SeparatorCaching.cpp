@@ -75,6 +75,7 @@ void replay(RenderAction& action, const SeparatorCache& cache, bool transparent)
         look.lights = lights;
         look.clipPlanes = clipPlanes;
         frame.shapes.submit(frame, *r.mesh, look);
+        ++frame.replayedShapes;
     }
 }
 
@@ -150,10 +151,10 @@ void renderSeparator(RenderAction& action, Separator& node) {
 
 bool cacheableType(const NodeType& type) {
     const ActionMethods& methods = RenderAction::methods();
-    if (methods.hasMethod(type)) return rendersAsShape(type) || methods.runs(type, &renderSeparator);
+    if (methods.hasMethod(type))
+        return rendersAsShape(type) || methods.runs(type, &renderSeparator);
     // State work only: all but what lights or clips in world space, or resets the model.
-    return !type.isDerivedFrom(Light::classType()) &&
-           !type.isDerivedFrom(ClipPlane::classType()) &&
+    return !type.isDerivedFrom(Light::classType()) && !type.isDerivedFrom(ClipPlane::classType()) &&
            !type.isDerivedFrom(ResetTransform::classType());
 }
 

@@ -17,10 +17,10 @@
 #include <volsg/nodes/VertexShape.h>
 #include <volsg/render/BuiltinRendering.h>
 #include <volsg/render/GpuMesh.h>
-#include <volsg/render/RenderCaching.h>
-#include <volsg/render/SharedMeshes.h>
 #include <volsg/render/RenderAction.h>
+#include <volsg/render/RenderCaching.h>
 #include <volsg/render/ShapeRenderer.h>
+#include <volsg/render/SharedMeshes.h>
 
 namespace volsg {
 
@@ -107,7 +107,8 @@ void renderShape(RenderAction& action, Shape& shape) {
     const ShapeState scope = gatherShapeState(state, own);
     if (scope.drawStyle && scope.drawStyle->style() == DrawStyle::INVISIBLE) return;
     ShapeMesh& entry = frame.cache.get<ShapeMesh>(shape, shape.meshKey(state));
-    if (!entry.gpu) entry.gpu = frame.cache.shared<SharedMeshes>().find(shape.mesh(state), frame.shapes);
+    if (!entry.gpu)
+        entry.gpu = frame.cache.shared<SharedMeshes>().find(shape.mesh(state), frame.shapes);
     const GpuMesh& gpu = *entry.gpu;
     if (own && frame.recording) noteForCache(*frame.recording, *own); // a field, not a child
     if (gpu.indexCount == 0) return;
@@ -143,7 +144,6 @@ void renderShape(RenderAction& action, Shape& shape) {
     look.clipPlanes = clipPlanes;
     frame.shapes.submit(frame, gpu, look);
 }
-
 
 } // namespace
 
