@@ -364,11 +364,13 @@ ShapeTopology makeQuadMeshTopology(std::int32_t verticesPerRow, std::int32_t ver
     std::uint32_t quad = 0;
     for (std::int64_t r = 0; r + 1 < fitting; ++r)
         for (std::int64_t c = 0; c + 1 < columns; ++c) {
-            // As Coin draws a row: a quad strip of the next row's and this row's vertices.
-            t.corners.push_back(corner(r + 1, c));
+            // As Coin draws a row: a quad strip of this row's and the next row's vertices,
+            // (r, c) (r+1, c) (r, c+1) (r+1, c+1) ...; each quad winds (r, c) (r+1, c)
+            // (r+1, c+1) (r, c+1), which decides what SOLID culls.
             t.corners.push_back(corner(r, c));
-            t.corners.push_back(corner(r, c + 1));
+            t.corners.push_back(corner(r + 1, c));
             t.corners.push_back(corner(r + 1, c + 1));
+            t.corners.push_back(corner(r, c + 1));
             addFace(t, quad++, std::uint32_t(r));
         }
     return t;
@@ -445,15 +447,20 @@ ShapeTopology makePointSetTopology(std::int32_t numPoints, std::int32_t startInd
 
 glm::vec2 defaultTextureCoord(const glm::vec3& point, const glm::vec3& boxMin,
                               const glm::vec3& boxSize) {
-    int s = 0, t = 1;
-    // Longest side first; ties keep x, y, z order.
-    int order[3] = {0, 1, 2};
-    std::stable_sort(order, order + 3, [&](int a, int b) { return boxSize[a] > boxSize[b]; });
-    s = order[0];
-    t = order[1];
-    const float longest = boxSize[s];
-    if (!(longest > 0.0f)) return glm::vec2(0.0f);
-    return {(point[s] - boxMin[s]) / longest, (point[t] - boxMin[t]) / longest};
+    // Coin's mapping (SoTextureCoordinateBundle): s and t along the two axes other than the
+    // smallest (the first smallest on ties), the larger first; on a tie between them the
+    // higher axis first (Coin keeps Open Inventor's order: a cube's s runs along z). Each is
+    // divided by its own side, so both run 0..1 across the box.
+    int smallest = 0;
+    if (boxSize[1] < boxSize[smallest]) smallest = 1;
+    if (boxSize[2] < boxSize[smallest]) smallest = 2;
+    int s = (smallest + 1) % 3, t = (smallest + 2) % 3;
+    if (boxSize[s] == boxSize[t] ? s < t : boxSize[s] < boxSize[t]) std::swap(s, t);
+    const auto along = [&](int axis) {
+        const float side = boxSize[axis] > 0.0f ? boxSize[axis] : 1.0f;
+        return (point[axis] - boxMin[axis]) / side;
+    };
+    return {along(s), along(t)};
 }
 
 void buildVertexShapeMesh(const ShapeTopology& t, const VertexAttributes& a, Mesh& out) {

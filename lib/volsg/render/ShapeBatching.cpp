@@ -64,6 +64,7 @@ void ShapeRenderer::batch(const GpuMesh& gpu, const ShapeLook& look) {
         look.cullBackFaces && gpu.mode == GL_TRIANGLES && look.style == ShapeLook::Style::Filled;
     const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
     key.frontClockwise = look.clockwise != mirrored;
+    key.twoSided = look.twoSidedLighting;
     if (key.texture) {
         key.sphereMap = t.sphereMap;
         key.blendColor = t.blendColor;

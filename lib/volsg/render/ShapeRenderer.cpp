@@ -23,19 +23,15 @@ glm::mat3 normalMatrixOf(const glm::dmat4& model) {
 
 ShapeRenderer::Locations ShapeRenderer::locate(const Program& p) const {
     auto at = [&p](const char* name) { return p.uniformLocation(name); };
-    return {at("uModel"),          at("uNormalMatrix"),
-            at("uViewProjection"), at("uView"),
-            at("uTextureMatrix"),  at("uLit"),
-            at("uHasNormals"),     at("uHasColors"),
-            at("uEmissive"),       at("uAmbient"),
-            at("uDiffuse"),        at("uSpecular"),
-            at("uShininess"),      at("uAlpha"),
-            at("uViewer"),         at("uSpot"),
-            at("uSpotExponent"),   at("uAttenuation"),
-            at("uTextureModel"),   at("uSphereMap"),
-            at("uTexture"),        at("uBlendColor"),
-            at("uFogType"),        at("uFogColor"),
-            at("uFogVisibility"),  SurfaceScope::Locations::of(p)};
+    return {at("uModel"),         at("uNormalMatrix"),  at("uViewProjection"),
+            at("uView"),          at("uTextureMatrix"), at("uLit"),
+            at("uHasNormals"),    at("uHasColors"),     at("uEmissive"),
+            at("uAmbient"),       at("uDiffuse"),       at("uSpecular"),
+            at("uShininess"),     at("uAlpha"),         at("uViewer"),
+            at("uSpot"),          at("uSpotExponent"),  at("uAttenuation"),
+            at("uTextureModel"),  at("uSphereMap"),     at("uTexture"),
+            at("uBlendColor"),    at("uFogType"),       at("uFogColor"),
+            at("uFogVisibility"), at("uTwoSided"),      SurfaceScope::Locations::of(p)};
 }
 
 ShapeRenderer::ShapeRenderer() {
@@ -145,6 +141,7 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
     // A mirroring model matrix turns the winding around.
     const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
     item.frontClockwise = look.clockwise != mirrored;
+    item.twoSided = look.twoSidedLighting;
     const ShapeTexturing& t = look.texturing;
     item.texture = t.texture && t.texture->uploaded ? t.texture : nullptr;
     item.textureModel = item.texture ? int(t.model) : -1;
@@ -201,6 +198,7 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
         glUniform1f(at.alpha, item.alpha);
     }
     glUniform1i(at.lit, item.lit ? 1 : 0);
+    glUniform1i(at.twoSided, item.twoSided ? 1 : 0);
     glUniform1i(at.hasNormals, gpu.hasNormals ? 1 : 0);
     glUniform1i(at.hasColors, gpu.hasColors ? 1 : 0);
     item.scope.upload(at.scope);

@@ -130,6 +130,8 @@ void renderShape(RenderAction& action, Shape& shape) {
         look.cullBackFaces = ordering != ShapeHints::UNKNOWN_ORDERING &&
                              scope.hints->shapeType() == ShapeHints::SOLID;
         look.clockwise = ordering == ShapeHints::CLOCKWISE;
+        look.twoSidedLighting = ordering != ShapeHints::UNKNOWN_ORDERING &&
+                                scope.hints->shapeType() == ShapeHints::UNKNOWN_SHAPE_TYPE;
     }
     std::shared_ptr<const ShapeTexture> texture;
     look.texturing = texturingOf(frame, scope, &texture);
