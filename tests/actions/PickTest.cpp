@@ -330,16 +330,19 @@ TEST_CASE("line sets are not pickable") {
 TEST_CASE("sphere pick lies within the tessellation error of the true sphere") {
     // Orthographic view down -Z, 6 units tall, sphere of radius 2 at the origin. A pixel's ray
     // x, y is exact; the mesh lies between radius r(1 - e) and r, e as in PrimitiveMeshes.h;
-    // the interpolated normal is within one cell diagonal (sqrt(2) pi / 32) of the radial.
+    // the interpolated normal is within one cell diagonal (the slice and band angles) of the
+    // radial.
     auto root = Separator::create();
     auto sphere = Sphere::create();
     sphere->radius = 2.0f;
     root->addChild(sphere);
     const auto camera = orthoCamera(6.0f);
     const double r = 2.0;
-    const double e = 1.0 - std::cos(std::numbers::pi / kRoundSlices) *
-                               std::cos(std::numbers::pi / (2 * kSphereStacks));
-    const double normalCos = std::cos(std::sqrt(2.0) * std::numbers::pi / kSphereStacks);
+    const int slices = sphereSlicesFor(0.5f), stacks = sphereStacksFor(0.5f);
+    const double e =
+        1.0 - std::cos(std::numbers::pi / slices) * std::cos(std::numbers::pi / (2 * stacks));
+    const double normalCos =
+        std::cos(std::hypot(2.0 * std::numbers::pi / slices, std::numbers::pi / stacks));
     for (auto [px, py] : {std::pair{49.5, 49.5}, std::pair{60.0, 45.0}, std::pair{35.0, 62.0},
                           std::pair{70.0, 70.0}, std::pair{50.0, 17.0}}) {
         CAPTURE(px);

@@ -47,6 +47,9 @@ public:
     void clipPlanesInScope(std::vector<glm::dvec4>& out) const;
 
 protected:
+    /// Gives the state the frame's view (projected, in pixels), as the shapes whose
+    /// tessellation follows the view (SCREEN_SPACE complexity) read it.
+    void beginTraversal(Node& root) override;
     void dispatch(Node& node) override;
 
 private:

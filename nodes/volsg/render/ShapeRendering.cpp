@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include <volsg/nodes/Complexity.h>
 #include <volsg/nodes/DrawStyle.h>
 #include <volsg/nodes/Environment.h>
 #include <volsg/nodes/LightModel.h>
@@ -111,6 +112,10 @@ void renderShape(RenderAction& action, Shape& shape) {
         entry.gpu = frame.cache.shared<SharedMeshes>().find(shape.mesh(state), frame.shapes);
     const GpuMesh& gpu = *entry.gpu;
     if (own && frame.recording) noteForCache(*frame.recording, *own); // a field, not a child
+    // A tessellation that follows the view cannot be replayed from another view (as Coin's
+    // sogl_render_* say DONT_AUTO_CACHE for SCREEN_SPACE).
+    if (frame.recording && scope.complexity && scope.complexity->type() == Complexity::SCREEN_SPACE)
+        frame.recording->cacheable = false;
     if (gpu.indexCount == 0) return;
 
     // Scratch kept across shapes: gathering allocates nothing per shape.
