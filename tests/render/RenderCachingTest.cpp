@@ -235,3 +235,34 @@ TEST_CASE("picking and bounding boxes see edits the render caches have not drawn
     REQUIRE(pick.picked().has_value());
     CHECK(pick.picked()->point.x == doctest::Approx(1.5).epsilon(0.05));
 }
+
+TEST_CASE("a cached Separator outside the view is not drawn and the image is unchanged") {
+    // The camera sees x and y in [-2, 2]: a cube at x = 10 is outside, one at x = 2.5 (1.5 to
+    // 3.5) crosses the right edge and is drawn.
+    Offscreen gl;
+    auto root = Separator::create();
+    root->addChild(camera());
+    root->addChild(cubeAt(0.0f, nullptr, emissive({1.0f, 0.0f, 0.0f})));
+    auto far = cubeAt(10.0f, nullptr, emissive({0.0f, 1.0f, 0.0f}));
+    root->addChild(far);
+    root->addChild(cubeAt(2.5f, nullptr, emissive({0.0f, 0.0f, 1.0f})));
+    Image culled;
+    for (int i = 0; i < 3; ++i)
+        culled = gl.cached.render(*root, options(96, true));
+    CHECK(gl.cached.stats().culledSeparators == 1);
+    CHECK(gl.cached.stats().replayedShapes == 2);
+    CHECK(gl.cached.stats().batchedShapes == 2); // the far cube was not drawn
+    const Image uncached = gl.uncached.render(*root, options(96, false));
+    CHECK(gl.uncached.stats().culledSeparators == 0);
+    CHECK(maxDifference(culled, uncached) <= kOneStep);
+    CHECK(glm::all(glm::lessThanEqual(glm::abs(centre(culled, 48) - glm::vec3(1.0f, 0.0f, 0.0f)),
+                                      glm::vec3(kOneStep))));
+    CHECK(glm::all(glm::lessThanEqual(glm::abs(centre(culled, 90) - glm::vec3(0.0f, 0.0f, 1.0f)),
+                                      glm::vec3(kOneStep)))); // x = 1.77
+
+    far->renderCulling.setValue(Separator::OFF); // an edit: records, then replays unculled
+    for (int i = 0; i < 3; ++i)
+        gl.cached.render(*root, options(96, true));
+    CHECK(gl.cached.stats().culledSeparators == 0);
+    CHECK(gl.cached.stats().batchedShapes == 3);
+}

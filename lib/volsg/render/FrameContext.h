@@ -70,6 +70,8 @@ struct RenderDebug {
     bool byteTarget = false;
     /// Separators whose subgraph does not change replay what they drew (render caches).
     bool renderCaching = true;
+    /// Separators with a valid render cache whose box lies outside the view are not drawn.
+    bool renderCulling = true;
     /// Opaque shapes are drawn batched: instanced draws grouped by state (ShapeRenderer).
     bool batchShapes = true;
 };
@@ -99,6 +101,8 @@ struct FrameContext {
     RenderRecording* recording = nullptr;
     /// Shapes replayed from render caches in this render (all passes).
     std::size_t replayedShapes = 0;
+    /// Separators left out in this render because their cached bounds lie outside the view.
+    std::size_t culledSeparators = 0;
 };
 
 } // namespace volsg

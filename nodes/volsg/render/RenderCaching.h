@@ -13,6 +13,7 @@
 
 #include <volsg/actions/ActionMethods.h>
 #include <volsg/core/Node.h>
+#include <volsg/math/Box3.h>
 #include <volsg/render/GpuMesh.h>
 #include <volsg/render/ShapeRenderer.h>
 
@@ -52,6 +53,8 @@ struct SeparatorCache {
     std::uint64_t aboveKey = 0;
     std::vector<CacheDependency> dependencies;
     std::vector<ShapeRecord> shapes; ///< models relative to the Separator
+    Box3 bounds;                     ///< of the shapes' meshes, relative to the Separator
+    bool culled = false;             ///< this render's opaque pass found it outside the view
     std::uint64_t validIn = 0;       ///< the render whose opaque pass found it valid
     int invalidRuns = 0;             ///< renders in a row that found it changed
     int skipRecording = 0;           ///< renders left before recording it again (AUTO)

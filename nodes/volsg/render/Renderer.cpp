@@ -214,6 +214,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     stats.shapeDraws = shapes.drawsLastFrame();
     stats.batches = shapes.batchesLastFrame();
     stats.replayedShapes = frame.replayedShapes;
+    stats.culledSeparators = frame.culledSeparators;
     stats.batchedShapes = shapes.batchedShapesLastFrame();
     stats.meshBytes = cache.shared<SharedMeshes>().bytes();
     stats.instanceBytes = shapes.instanceBytes();

@@ -39,15 +39,16 @@ struct RenderOptions {
 /// uploads no mesh and builds no program.
 struct RenderStats {
     std::uint64_t frames = 0;
-    std::uint64_t meshUploads = 0;   ///< meshes sent to the GPU since the Renderer was made
-    std::uint64_t programBuilds = 0; ///< shader programs compiled and linked since then
-    std::size_t cachedEntries = 0;   ///< per-node GPU caches alive after the last frame
-    std::size_t shapeDraws = 0;      ///< shape draw calls in the last frame
-    std::size_t batches = 0;         ///< instanced draws of batched opaque shapes, last frame
-    std::size_t batchedShapes = 0;   ///< the shapes those draws drew
-    std::size_t replayedShapes = 0;  ///< shapes drawn from Separators' render caches, last frame
-    std::size_t meshBytes = 0;       ///< GPU bytes of the (shared) shape meshes alive
-    std::size_t instanceBytes = 0;   ///< GPU bytes of the per-instance buffer
+    std::uint64_t meshUploads = 0;    ///< meshes sent to the GPU since the Renderer was made
+    std::uint64_t programBuilds = 0;  ///< shader programs compiled and linked since then
+    std::size_t cachedEntries = 0;    ///< per-node GPU caches alive after the last frame
+    std::size_t shapeDraws = 0;       ///< shape draw calls in the last frame
+    std::size_t batches = 0;          ///< instanced draws of batched opaque shapes, last frame
+    std::size_t batchedShapes = 0;    ///< the shapes those draws drew
+    std::size_t replayedShapes = 0;   ///< shapes drawn from Separators' render caches, last frame
+    std::size_t culledSeparators = 0; ///< Separators outside the view, not drawn, last frame
+    std::size_t meshBytes = 0;        ///< GPU bytes of the (shared) shape meshes alive
+    std::size_t instanceBytes = 0;    ///< GPU bytes of the per-instance buffer
 };
 
 /// Holds the GL resources (programs, meshes, targets) of one context across frames. Create

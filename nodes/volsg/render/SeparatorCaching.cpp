@@ -79,6 +79,27 @@ void replay(RenderAction& action, const SeparatorCache& cache, bool transparent)
     }
 }
 
+/// View-frustum culling (Inventor's renderCulling AUTO, as Coin: with a valid cache's box): the
+/// box relative to the Separator, whose corners are all beyond one side of the view volume.
+bool outsideView(const RenderAction& action, const Box3& box) {
+    if (box.isEmpty()) return true; // draws nothing
+    const glm::dmat4 toClip =
+        action.projectionMatrix() * action.viewMatrix() * action.state().modelMatrix();
+    glm::dvec4 c[8];
+    for (int i = 0; i < 8; ++i)
+        c[i] = toClip * glm::dvec4((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                                   (i & 4) ? box.max.z : box.min.z, 1.0);
+    for (int axis = 0; axis < 3; ++axis)
+        for (double side : {-1.0, 1.0}) {
+            // Beyond the plane side * x = w (x the clip coordinate of this axis).
+            bool allBeyond = true;
+            for (const glm::dvec4& p : c)
+                allBeyond = allBeyond && side * p[axis] > p.w;
+            if (allBeyond) return true;
+        }
+    return false;
+}
+
 /// Traverses the Separator while recording it, and keeps the recording in `cache`.
 void record(RenderAction& action, Separator& node, SeparatorCache& cache, std::uint64_t above) {
     FrameContext& frame = action.frame();
@@ -105,6 +126,9 @@ void record(RenderAction& action, Separator& node, SeparatorCache& cache, std::u
         r.look.model = toLocal * r.look.model;
     cache.dependencies = std::move(rec.dependencies);
     cache.shapes = rec.cacheable ? std::move(rec.shapes) : std::vector<ShapeRecord>{};
+    cache.bounds = Box3{};
+    for (const ShapeRecord& r : cache.shapes)
+        if (!r.mesh->bounds.isEmpty()) cache.bounds.extendBy(r.mesh->bounds, r.look.model);
 }
 
 void renderSeparator(RenderAction& action, Separator& node) {
@@ -122,7 +146,7 @@ void renderSeparator(RenderAction& action, Separator& node) {
         // or traverse.
         if (cache.validIn != frame.renderSerial) {
             node.doAction(action);
-        } else if (action.pass() == RenderPass::Transparent) {
+        } else if (action.pass() == RenderPass::Transparent && !cache.culled) {
             replay(action, cache, true);
         }
         return;
@@ -132,8 +156,13 @@ void renderSeparator(RenderAction& action, Separator& node) {
     if (valid && cache.cacheable) {
         cache.invalidRuns = 0;
         cache.validIn = frame.renderSerial;
-        replay(action, cache, false);
         if (frame.recording) passOutward(*frame.recording, cache, action.state().modelMatrix());
+        cache.culled = node.renderCulling() != Separator::OFF && frame.debug.renderCulling &&
+                       outsideView(action, cache.bounds);
+        if (cache.culled)
+            ++frame.culledSeparators;
+        else
+            replay(action, cache, false);
         return;
     }
     cache.validIn = 0;
