@@ -13,8 +13,8 @@ bool validIndex(std::int64_t i, std::size_t count) {
     return i >= 0 && static_cast<std::uint64_t>(i) < count;
 }
 
-/// A count field's entries: -1 (and the last entry, if the list ends early) takes the rest of
-/// the points; other negative counts are left out.
+/// A count field's entries: -1 takes the rest of the points; other negative counts are left
+/// out; counts past the points are cut at them.
 template <class Visit>
 void forEachCounted(std::span<const std::int32_t> counts, std::int32_t startIndex,
                     std::size_t pointCount, Visit&& visit) {
@@ -27,6 +27,22 @@ void forEachCounted(std::span<const std::int32_t> counts, std::int32_t startInde
         visit(next, end);
         next = end;
     }
+}
+
+/// forEachCounted with each run's corners made: a non-indexed shape's vertex k is its point
+/// startIndex + k. `visit` gets the run's corners.
+template <class Visit>
+void forEachCountedRun(std::span<const std::int32_t> counts, std::int32_t startIndex,
+                       std::size_t pointCount, Visit&& visit) {
+    std::vector<Corner> corners;
+    forEachCounted(counts, startIndex, pointCount, [&](std::int64_t begin, std::int64_t end) {
+        corners.clear();
+        for (std::int64_t i = begin; i < end; ++i) {
+            const auto vertex = std::uint32_t(i - std::max(startIndex, 0));
+            corners.push_back({std::int32_t(i), vertex, vertex});
+        }
+        visit(std::span<const Corner>(corners));
+    });
 }
 
 /// Runs of an index field split at -1 (a trailing run without -1 counts too).
@@ -315,15 +331,8 @@ ShapeTopology makeTriangleStripSetTopology(std::span<const std::int32_t> numVert
                                            std::int32_t startIndex, std::size_t pointCount) {
     ShapeTopology t;
     std::uint32_t strip = 0, triangle = 0;
-    std::vector<Corner> corners;
-    forEachCounted(numVertices, startIndex, pointCount, [&](std::int64_t begin, std::int64_t end) {
-        corners.clear();
-        for (std::int64_t i = begin; i < end; ++i) {
-            const auto vertex = std::uint32_t(i - std::max(startIndex, 0));
-            corners.push_back({std::int32_t(i), vertex, vertex});
-        }
-        addStrip(t, corners, strip++, triangle);
-    });
+    forEachCountedRun(numVertices, startIndex, pointCount,
+                      [&](std::span<const Corner> run) { addStrip(t, run, strip++, triangle); });
     return t;
 }
 
@@ -394,14 +403,8 @@ ShapeTopology makeLineSetTopology(std::span<const std::int32_t> numVertices,
     ShapeTopology t;
     t.primitive = Mesh::Primitive::Lines;
     std::uint32_t polyline = 0, segment = 0;
-    std::vector<Corner> corners;
-    forEachCounted(numVertices, startIndex, pointCount, [&](std::int64_t begin, std::int64_t end) {
-        corners.clear();
-        for (std::int64_t i = begin; i < end; ++i) {
-            const auto vertex = std::uint32_t(i - std::max(startIndex, 0));
-            corners.push_back({std::int32_t(i), vertex, vertex});
-        }
-        addPolylineSegments(t, corners, polyline++, segment);
+    forEachCountedRun(numVertices, startIndex, pointCount, [&](std::span<const Corner> run) {
+        addPolylineSegments(t, run, polyline++, segment);
     });
     return t;
 }

@@ -67,6 +67,11 @@ public:
     /// interactiveSliceStep / interactivePlaneScale rounded, in [1, 16].
     int sliceStepFor(bool interactive, double interactivePlaneScale) const;
 
+    /// The object drawn when the node has no VolumeObject child: WHOLE with every field at its
+    /// default, so a bare ShearWarpVolume shows the whole volume through the transfer function
+    /// in scope, as a Volume would. Made on first use, owned by this node (never a child).
+    VolumeObject& wholeVolumeObject();
+
     /// The folder of the scene file: a relative voxelFile resolves against it.
     const std::string& directory() const { return directory_; }
 
@@ -86,6 +91,7 @@ private:
     std::vector<ref_ptr<VoxelObject>> lastObjects_;
     glm::dmat4 lastModel_{1.0};
     std::string directory_; ///< of the scene file: a relative voxelFile resolves against it
+    ref_ptr<VolumeObject> wholeVolume_; ///< wholeVolumeObject()
 };
 
 } // namespace volsg

@@ -3,6 +3,7 @@
 #include <volsg/gl/GlDebug.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/Light.h>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/RenderCache.h>
 #include <volsg/render/RenderTarget.h>
@@ -18,8 +19,9 @@ namespace volsg {
 namespace {
 
 /// Walks the scene as every action does (doAction on each node, so transforms and
-/// separators act) and notes the first Camera with its model matrix and whether any light
-/// is on. Stops as soon as it knows what it was asked for.
+/// separators act) and notes the first Camera with its model matrix, whether any light is on
+/// and whether a ShearWarpVolume is drawn. Stops as soon as it knows what it was asked for (so
+/// the last is known when there is no camera).
 class SceneSurveyAction : public Action {
 public:
     explicit SceneSurveyAction(bool wantLights) : wantLights_(wantLights) {}
@@ -27,6 +29,7 @@ public:
     Camera* camera() const { return camera_.get(); }
     const glm::dmat4& cameraModel() const { return cameraModel_; }
     bool hasLight() const { return hasLight_; }
+    bool hasShearWarpVolume() const { return hasShearWarp_; }
 
 protected:
     void dispatch(Node& node) override {
@@ -35,6 +38,7 @@ protected:
             cameraModel_ = state().modelMatrix();
         }
         if (node.isA<Light>() && static_cast<Light&>(node).on()) hasLight_ = true;
+        if (node.isA<ShearWarpVolume>()) hasShearWarp_ = true;
         node.doAction(*this);
         if (camera_ && (hasLight_ || !wantLights_)) terminate();
     }
@@ -44,10 +48,17 @@ private:
     ref_ptr<Camera> camera_;
     glm::dmat4 cameraModel_{1.0};
     bool hasLight_ = false;
+    bool hasShearWarp_ = false;
 };
 
-SceneCamera makeViewAllCamera(Node& root, double aspect) {
-    ref_ptr<PerspectiveCamera> camera = PerspectiveCamera::create();
+/// The camera of a scene without one: perspective, or orthographic when the scene draws a
+/// ShearWarpVolume (which renders parallel projections only).
+SceneCamera makeViewAllCamera(Node& root, double aspect, bool orthographic) {
+    ref_ptr<Camera> camera;
+    if (orthographic)
+        camera = OrthographicCamera::create();
+    else
+        camera = PerspectiveCamera::create();
     camera->viewAll(computeBoundingBox(root), aspect);
     return {camera, glm::dmat4(1.0)};
 }
@@ -110,7 +121,7 @@ SceneCamera findOrMakeCamera(Node& root, double viewportAspect) {
     SceneSurveyAction survey(false);
     survey.apply(root);
     if (survey.camera()) return {ref_ptr<Camera>(survey.camera()), survey.cameraModel()};
-    return makeViewAllCamera(root, viewportAspect);
+    return makeViewAllCamera(root, viewportAspect, survey.hasShearWarpVolume());
 }
 
 struct Renderer::Impl {
@@ -140,7 +151,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     else if (survey.camera())
         scene = {ref_ptr<Camera>(survey.camera()), survey.cameraModel()};
     else
-        scene = makeViewAllCamera(root, aspect);
+        scene = makeViewAllCamera(root, aspect, survey.hasShearWarpVolume());
     scene.camera->check(scene.model);
 
     RenderView view;
@@ -256,8 +267,14 @@ const RenderStats& Renderer::stats() const {
 }
 
 Image Renderer::render(Node& root, const RenderOptions& options) {
+    Image image;
+    render(root, options, image);
+    return image;
+}
+
+void Renderer::render(Node& root, const RenderOptions& options, Image& into) {
     renderFrame(root, options);
-    return readImage();
+    readImage(into);
 }
 
 void Renderer::renderFrame(Node& root, const RenderOptions& options) {
@@ -266,17 +283,33 @@ void Renderer::renderFrame(Node& root, const RenderOptions& options) {
 }
 
 Image Renderer::readImage() const {
+    Image image;
+    readImage(image);
+    return image;
+}
+
+void Renderer::readImage(Image& into) const {
     const RenderTarget& target = impl_->target;
-    if (target.width() == 0) return {};
+    const int width = target.width(), height = target.height();
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    if (into.pixels.size() != pixels) into.pixels.resize(pixels); // every pixel is read below
+    into.width = width;
+    into.height = height;
+    if (pixels == 0) return;
     const BoundFramebuffers caller;
-    Image image(target.width(), target.height());
     target.framebuffer().bind(GL_READ_FRAMEBUFFER);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, target.width(), target.height(), GL_RGBA, GL_FLOAT, image.pixels.data());
-    flipRows(image.pixels, target.width(), target.height());
+    // GL's rows run bottom-up, the Image's top-down: Mesa's GL_MESA_pack_invert reads them in
+    // the Image's order (no second pass over the pixels); elsewhere they are swapped after.
+    const bool invert = GLAD_GL_MESA_pack_invert != 0;
+    if (invert) glPixelStorei(GL_PACK_INVERT_MESA, GL_TRUE);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, into.pixels.data());
+    if (invert)
+        glPixelStorei(GL_PACK_INVERT_MESA, GL_FALSE);
+    else
+        flipRows(into.pixels, width, height);
     checkGlError("Renderer::readImage");
-    return image;
 }
 
 void Renderer::renderToBoundFramebuffer(Node& root, const RenderOptions& options) {
