@@ -12,6 +12,9 @@
 
 #include "CommandLine.h"
 #include "bench/BenchRow.h"
+#ifdef VOLSG_BENCH_COIN
+#include "bench/CoinSuite.h"
+#endif
 #include "bench/CompactSuite.h"
 #include "bench/ImageError.h"
 #include "bench/NodeSuite.h"
@@ -52,8 +55,12 @@ const char* usage =
     "                   [--reference-dir DIR] [--compare DIR [--rows CSV]] [--keep DIR]\n"
     "                   [--csv FILE] [--plot FILE.svg]\n"
     "       volsg-bench --suite node --export-views DIR [--size WxH] [--frames N] ...\n"
+    "       volsg-bench --suite coin [--size WxH] [--frames N] [--cases NAME,...]\n"
+    "                   [--models FILE|DIR,...] [--read-back] [--keep DIR]   (built where\n"
+    "                   Coin is found; --read-back: volsg's frame reads the float image back)\n"
     "       every form also takes the debug switches [--no-empty-cells]\n"
     "                   [--no-texture-staging] [--max-3d-texture N] [--scalar-kernels]\n"
+    "                   [--byte-target] [--no-render-caching] [--no-batching]\n"
     "  --error         also compare K of the frames with the reference ray caster (same\n"
     "                  views, same size): RMSE, PSNR and max abs error\n"
     "  --error-frames  how many frames to compare (default: all, at most 4)\n"
@@ -85,7 +92,15 @@ const char* usage =
     "  --max-3d-texture N    Volume: bricks of at most N texels a side (below the driver's\n"
     "                        GL_MAX_3D_TEXTURE_SIZE)\n"
     "  --scalar-kernels      ShearWarpVolume: the scalar kernels, not the widest vector ones\n"
-    "                        this CPU runs\n";
+    "                        this CPU runs\n"
+    "  --byte-target         frames without volumes on an 8-bit target, not the float one\n"
+    "  --no-render-caching   Separators traverse every frame (no render caches)\n"
+    "  --no-batching         opaque shapes drawn one by one, not as instanced batches\n"
+    "  --suite coin    the same files through Coin3D (SoGLRenderAction, caching AUTO, +\n"
+    "                  glFinish) and volsg (renderFrame + glFinish), frames alternating, median\n"
+    "                  ms and Coin/volsg (default 512x512, 20 frames; cases grid, grid-edit,\n"
+    "                  grid100k, grid100k-edit, cone, models; --models: the files of the\n"
+    "                  models case, default six of /usr/share/inventor/data/models)\n";
 
 struct Settings {
     std::string scene, suite, keepDir, csv, plot;
@@ -101,8 +116,9 @@ struct Settings {
     bool errorFramesGiven = false;
     double tolerance = 0.0; ///< 0: the suite's default
     std::vector<double> planes;
-    std::vector<std::string> cases, kinds;
+    std::vector<std::string> cases, kinds, models;
     bool planesOnly = false;
+    bool readBack = false; ///< --suite coin: volsg's frame reads the image back
     int samplesPerPlane = 1;
     bool mipPeaks = true;
     std::string scenesDir = VOLSG_BENCH_SCENES_DIR;
@@ -331,7 +347,9 @@ int run(cli::Arguments& args) {
                })
         .value("--cases", list(st.cases))
         .value("--kinds", list(st.kinds))
+        .value("--models", list(st.models))
         .flag("--planes-only", st.planesOnly)
+        .flag("--read-back", st.readBack)
         .integer("--samples-per-plane", st.samplesPerPlane, 1, 256)
         .flag("--no-mip-peaks", st.mipPeaks, false)
         .text("--scenes", st.scenesDir)
@@ -354,7 +372,10 @@ int run(cli::Arguments& args) {
         .flag("--no-empty-cells", st.options.debug.skipEmptyCells, false)
         .flag("--no-texture-staging", st.options.debug.textureStaging, false)
         .integer("--max-3d-texture", st.options.debug.max3DTextureSize, 2, 16384)
-        .flag("--scalar-kernels", st.options.debug.vectorKernels, false);
+        .flag("--scalar-kernels", st.options.debug.vectorKernels, false)
+        .flag("--byte-target", st.options.debug.byteTarget)
+        .flag("--no-render-caching", st.options.debug.renderCaching, false)
+        .flag("--no-batching", st.options.debug.batchShapes, false);
     const auto scene = [&](const std::string& a) {
         if (!st.scene.empty()) throw Error("more than one scene file given");
         st.scene = a;
@@ -386,6 +407,24 @@ int run(cli::Arguments& args) {
         return 0;
     }
     if (st.suite == "node") return nodeSuite(st);
+    if (st.suite == "coin") {
+#ifdef VOLSG_BENCH_COIN
+        bench::CoinSuiteSettings cs;
+        if (st.sizeGiven) {
+            cs.width = st.options.width;
+            cs.height = st.options.height;
+        }
+        if (st.framesGiven) cs.frames = st.frames;
+        cs.cases = st.cases;
+        cs.models = st.models;
+        cs.keepDir = st.keepDir;
+        cs.debug = st.options.debug;
+        cs.readBack = st.readBack;
+        return bench::runCoinSuite(cs) > 0 ? 0 : 1;
+#else
+        throw Error("this volsg-bench was built without Coin3D (libcoin-dev): no coin suite");
+#endif
+    }
     if (st.suite == "compact") { // .vsgv sizes and times (lib/volsg/voxelfile)
         bench::CompactSuiteSettings cs;
         if (st.framesGiven) cs.repeats = st.frames;

@@ -4,12 +4,16 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <string>
 
 #include <volsg/actions/PickAction.h>
 #include <volsg/geometry/PrimitiveMeshes.h>
 #include <volsg/geometry/RayIntersect.h>
+#include <volsg/io/SceneReader.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/Complexity.h>
 #include <volsg/nodes/Coordinate3.h>
 #include <volsg/nodes/Cube.h>
 #include <volsg/nodes/IndexedLineSet.h>
@@ -61,6 +65,17 @@ glm::dvec2 orthoPixel(double x, double y, int width, int height, double halfWidt
                       double halfHeight) {
     return {(2.0 * (x + 0.5) / width - 1.0) * halfWidth,
             (1.0 - 2.0 * (y + 0.5) / height) * halfHeight};
+}
+
+ref_ptr<Node> read(const std::string& body) {
+    return readSceneFromString("#Inventor V2.1 ascii\n" + body, "<string>");
+}
+
+std::optional<PickedPoint> pickRay(Node& root, glm::dvec3 origin, glm::dvec3 direction) {
+    PickAction pick;
+    pick.setRay({origin, direction});
+    pick.apply(root);
+    return pick.picked();
 }
 
 } // namespace
@@ -327,37 +342,68 @@ TEST_CASE("line sets are not pickable") {
     CHECK_FALSE(pick.picked());
 }
 
-TEST_CASE("sphere pick lies within the tessellation error of the true sphere") {
+TEST_CASE("a sphere is picked on the true sphere, as Coin picks it, not on its tessellation") {
     // Orthographic view down -Z, 6 units tall, sphere of radius 2 at the origin. A pixel's ray
-    // x, y is exact; the mesh lies between radius r(1 - e) and r, e as in PrimitiveMeshes.h;
-    // the interpolated normal is within one cell diagonal (sqrt(2) pi / 32) of the radial.
-    auto root = Separator::create();
-    auto sphere = Sphere::create();
-    sphere->radius = 2.0f;
-    root->addChild(sphere);
-    const auto camera = orthoCamera(6.0f);
-    const double r = 2.0;
-    const double e = 1.0 - std::cos(std::numbers::pi / kRoundSlices) *
-                               std::cos(std::numbers::pi / (2 * kSphereStacks));
-    const double normalCos = std::cos(std::sqrt(2.0) * std::numbers::pi / kSphereStacks);
-    for (auto [px, py] : {std::pair{49.5, 49.5}, std::pair{60.0, 45.0}, std::pair{35.0, 62.0},
-                          std::pair{70.0, 70.0}, std::pair{50.0, 17.0}}) {
-        CAPTURE(px);
-        CAPTURE(py);
-        const auto hit = pickPixel(*root, camera, px, py, 100, 100);
-        REQUIRE(hit);
-        const glm::dvec2 xy = orthoPixel(px, py, 100, 100, 3.0, 3.0);
-        CHECK(hit->point.x == doctest::Approx(xy.x).epsilon(1e-6));
-        CHECK(hit->point.y == doctest::Approx(xy.y).epsilon(1e-6));
-        const double radius = glm::length(hit->point);
-        CHECK(radius <= r + 1e-6);
-        CHECK(radius >= r * (1.0 - e) - 1e-6);
-        CHECK(hit->point.z > 0.0); // the front half
-        CHECK(hit->distance == doctest::Approx(10.0 - hit->point.z).epsilon(1e-9));
-        CHECK(glm::length(hit->normal) == doctest::Approx(1.0).epsilon(1e-9));
-        CHECK(glm::dot(hit->normal, hit->point / radius) >= normalCos);
+    // x, y is exact; the hit is on the sphere (z = sqrt(r^2 - x^2 - y^2)) with the radial normal,
+    // at every Complexity (the drawn tessellation changes with it; the pick does not).
+    for (const float complexity : {0.0f, 0.5f, 1.0f}) {
+        CAPTURE(complexity);
+        auto root = Separator::create();
+        auto detail = Complexity::create();
+        detail->value = complexity;
+        root->addChild(detail);
+        auto sphere = Sphere::create();
+        sphere->radius = 2.0f;
+        root->addChild(sphere);
+        const auto camera = orthoCamera(6.0f);
+        const double r = 2.0;
+        for (auto [px, py] : {std::pair{49.5, 49.5}, std::pair{60.0, 45.0}, std::pair{35.0, 62.0},
+                              std::pair{70.0, 70.0}, std::pair{50.0, 17.0}}) {
+            CAPTURE(px);
+            CAPTURE(py);
+            const auto hit = pickPixel(*root, camera, px, py, 100, 100);
+            REQUIRE(hit);
+            const glm::dvec2 xy = orthoPixel(px, py, 100, 100, 3.0, 3.0);
+            CHECK(hit->point.x == doctest::Approx(xy.x).epsilon(1e-6));
+            CHECK(hit->point.y == doctest::Approx(xy.y).epsilon(1e-6));
+            CHECK(hit->point.z == doctest::Approx(std::sqrt(r * r - glm::dot(xy, xy))));
+            CHECK(hit->distance == doctest::Approx(10.0 - hit->point.z).epsilon(1e-9));
+            CHECK(glm::length(hit->normal - hit->point / r) < 1e-9);
+        }
+        CHECK_FALSE(pickPixel(*root, camera, 50, 5, 100, 100)); // y = 2.67 > r
     }
-    CHECK_FALSE(pickPixel(*root, camera, 50, 5, 100, 100)); // y = 2.67 > r
+}
+
+TEST_CASE("a cone and a cylinder are picked on their exact sides and caps, part by part") {
+    // Cone: bottom radius 1, height 2 (apex y = 1). A ray along -z at y = 0.5 meets the side
+    // where its radius is 0.25; with only the BOTTOM part it meets nothing there.
+    auto cone = read("Cone { }");
+    auto hit = pickRay(*cone, {0.1, 0.5, 5}, {0, 0, -1});
+    REQUIRE(hit);
+    CHECK(hit->point.z == doctest::Approx(std::sqrt(0.25 * 0.25 - 0.01)));
+    CHECK(hit->primitiveIndex == 0);
+    auto bottomOnly = read("Cone { parts BOTTOM }");
+    CHECK_FALSE(pickRay(*bottomOnly, {0.1, 0.5, 5}, {0, 0, -1}));
+    hit = pickRay(*bottomOnly, {0.3, -5, 0.2}, {0, 1, 0});
+    REQUIRE(hit);
+    CHECK(hit->point.y == doctest::Approx(-1.0));
+    CHECK(hit->normal.y == doctest::Approx(-1.0));
+    CHECK(hit->primitiveIndex == 1);
+    // Cylinder radius 1, height 2: the top from above, the side from the front.
+    auto cylinder = read("Cylinder { }");
+    hit = pickRay(*cylinder, {0.5, 5, 0.5}, {0, -1, 0});
+    REQUIRE(hit);
+    CHECK(hit->point.y == doctest::Approx(1.0));
+    CHECK(hit->primitiveIndex == 1);
+    hit = pickRay(*cylinder, {0.6, 0.3, 5}, {0, 0, -1});
+    REQUIRE(hit);
+    CHECK(hit->point.z == doctest::Approx(0.8));
+    CHECK(hit->normal.x == doctest::Approx(0.6));
+    CHECK(hit->primitiveIndex == 0);
+    // From inside (the camera inside a cylinder): the far wall.
+    hit = pickRay(*cylinder, {0, 0, 0}, {0, 0, -1});
+    REQUIRE(hit);
+    CHECK(hit->point.z == doctest::Approx(-1.0));
 }
 
 TEST_CASE("without an explicit camera the scene's camera and its model are used") {

@@ -2,11 +2,14 @@
 // winding, parts, and the indexed shapes' index and normal rules.
 #include <doctest/doctest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cmath>
 #include <numbers>
 
 #include <volsg/geometry/PrimitiveMeshes.h>
 #include <volsg/geometry/VertexShapes.h>
+#include <volsg/nodes/Complexity.h>
 #include <volsg/nodes/Cone.h>
 #include <volsg/nodes/Coordinate3.h>
 #include <volsg/nodes/Cube.h>
@@ -108,7 +111,8 @@ TEST_CASE("sphere vertices lie at the radius with radial unit normals") {
     sphere->radius = 2.5f;
     State state;
     const Mesh& m = sphere->mesh(state);
-    CHECK(m.primitiveCount() == std::size_t(2 * kRoundSlices * (kSphereStacks - 1)));
+    // Coin's sphere at complexity 0.5: 15 slices, 15 rings pole to pole (14 bands).
+    CHECK(m.primitiveCount() == std::size_t(2 * 15 * (14 - 1)));
     CHECK(indicesInRange(m));
     double worstRadius = 0.0, worstNormal = 0.0;
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
@@ -118,8 +122,14 @@ TEST_CASE("sphere vertices lie at the radius with radial unit normals") {
     }
     CHECK(worstRadius <= 1e-6);
     CHECK(worstNormal <= 1e-6);
-    CHECK(glm::all(glm::lessThanEqual(glm::abs(m.bounds().min + 2.5), glm::dvec3(1e-6))));
-    CHECK(glm::all(glm::lessThanEqual(glm::abs(m.bounds().max - 2.5), glm::dvec3(1e-6))));
+    // The poles are exact; around Y the 15 slices reach the radius only at their vertices.
+    const double sag = 2.5 * (1.0 - std::cos(std::numbers::pi / 15));
+    CHECK(m.bounds().min.y == doctest::Approx(-2.5).epsilon(1e-7));
+    CHECK(m.bounds().max.y == doctest::Approx(2.5).epsilon(1e-7));
+    for (int axis : {0, 2}) {
+        CHECK(m.bounds().min[axis] <= -2.5 + sag);
+        CHECK(m.bounds().max[axis] >= 2.5 - sag);
+    }
     CHECK(windingAndNormalErrors(m) == 0);
 }
 
@@ -127,9 +137,10 @@ TEST_CASE("sphere triangles stay within the stated tessellation error") {
     // PrimitiveMeshes.h: the surface is at most r * (1 - cos(pi/slices) * cos(pi/(2 stacks)))
     // inside the true sphere; that is the distance of each triangle's plane from the centre.
     Mesh m;
-    buildSphereMesh(1.0f, kRoundSlices, kSphereStacks, m);
-    const double bound = 1.0 - std::cos(std::numbers::pi / kRoundSlices) *
-                                   std::cos(std::numbers::pi / (2 * kSphereStacks));
+    const int slices = 15, stacks = 14;
+    buildSphereMesh(1.0f, slices, stacks, m);
+    const double bound =
+        1.0 - std::cos(std::numbers::pi / slices) * std::cos(std::numbers::pi / (2 * stacks));
     double worst = 0.0;
     for (std::size_t i = 0; i < m.indices.size(); i += 3) {
         const glm::dvec3 a = d(m.positions[m.indices[i]]), b = d(m.positions[m.indices[i + 1]]),
@@ -176,24 +187,27 @@ TEST_CASE("cone apex is at half the height above a base circle of the bottom rad
             CHECK(glm::dot(glm::dvec2(n.x, n.z), glm::dvec2(p.x, p.z)) > 0.0);
         }
     }
-    CHECK(apexCount == kRoundSlices);
-    CHECK(baseCount == kRoundSlices + 1);
-    CHECK(bottomCount == kRoundSlices + 2); // centre plus the closed ring
-    CHECK(m.primitiveCount() == std::size_t(2 * kRoundSlices));
+    const int sides = 20; // Coin's cone at complexity 0.5
+    CHECK(apexCount == sides);
+    CHECK(baseCount == sides + 1);
+    CHECK(bottomCount == sides + 2); // centre plus the closed ring
+    CHECK(m.primitiveCount() == std::size_t(2 * sides));
 }
+
+constexpr int kDefaultSides = 20; // cones and cylinders at complexity 0.5, as Coin's
 
 TEST_CASE("cone parts bit mask selects sides and bottom") {
     auto cone = Cone::create();
     State state;
     cone->parts.setValue(Cone::SIDES);
     const Mesh& sides = cone->mesh(state);
-    CHECK(sides.primitiveCount() == std::size_t(kRoundSlices));
+    CHECK(sides.primitiveCount() == std::size_t(kDefaultSides));
     for (const auto& n : sides.normals)
         CHECK(n.y > 0.0f);
 
     cone->parts.setValue(Cone::BOTTOM);
     const Mesh& bottom = cone->mesh(state);
-    CHECK(bottom.primitiveCount() == std::size_t(kRoundSlices));
+    CHECK(bottom.primitiveCount() == std::size_t(kDefaultSides));
     for (const auto& n : bottom.normals)
         CHECK(n == glm::vec3(0, -1, 0));
     CHECK(windingAndNormalErrors(bottom) == 0);
@@ -208,7 +222,7 @@ TEST_CASE("cylinder parts select sides top and bottom with the right normals") {
     cylinder->height = 4.0f;
     State state;
     const Mesh& all = cylinder->mesh(state);
-    CHECK(all.primitiveCount() == std::size_t(4 * kRoundSlices));
+    CHECK(all.primitiveCount() == std::size_t(4 * kDefaultSides));
     CHECK(windingAndNormalErrors(all) == 0);
     CHECK(all.bounds().min.y == -2.0);
     CHECK(all.bounds().max.y == 2.0);
@@ -226,16 +240,75 @@ TEST_CASE("cylinder parts select sides top and bottom with the right normals") {
 
     cylinder->parts.setValue(Cylinder::TOP);
     const Mesh& top = cylinder->mesh(state);
-    CHECK(top.primitiveCount() == std::size_t(kRoundSlices));
+    CHECK(top.primitiveCount() == std::size_t(kDefaultSides));
     for (const auto& n : top.normals)
         CHECK(n == glm::vec3(0, 1, 0));
     CHECK(windingAndNormalErrors(top) == 0);
 
     cylinder->parts.setValue(Cylinder::SIDES | Cylinder::BOTTOM);
     const Mesh& sidesBottom = cylinder->mesh(state);
-    CHECK(sidesBottom.primitiveCount() == std::size_t(3 * kRoundSlices));
+    CHECK(sidesBottom.primitiveCount() == std::size_t(3 * kDefaultSides));
     for (const auto& n : sidesBottom.normals)
         CHECK(n.y <= 0.0f);
+}
+
+TEST_CASE("round primitives take Coin's slice counts for a complexity value") {
+    // SoSphere: (int)(30 c) slices and rings (c clamped to [0, 1]), at least 4 slices and 3
+    // rings; SoCone, SoCylinder: (int)(40 c) sides, 4 to 128 (c not clamped).
+    CHECK(sphereSlicesFor(0.5f) == 15);
+    CHECK(sphereStacksFor(0.5f) == 14);
+    CHECK(sphereSlicesFor(1.0f) == 30);
+    CHECK(sphereStacksFor(1.0f) == 29);
+    CHECK(sphereSlicesFor(0.0f) == 4);
+    CHECK(sphereStacksFor(0.0f) == 2);
+    CHECK(sphereSlicesFor(7.0f) == 30);
+    CHECK(roundSlicesFor(0.5f) == 20);
+    CHECK(roundSlicesFor(0.3f) == 12);
+    CHECK(roundSlicesFor(1.0f) == 40);
+    CHECK(roundSlicesFor(2.0f) == 80);
+    CHECK(roundSlicesFor(100.0f) == 128);
+    CHECK(roundSlicesFor(-1.0f) == 4);
+    CHECK(roundSlicesFor(std::nanf("")) == 20);
+
+    auto complexity = Complexity::create();
+    complexity->value = 0.2f;
+    auto cone = Cone::create();
+    cone->parts.setValue(Cone::SIDES);
+    State state;
+    state.add(*complexity);
+    CHECK(cone->mesh(state).primitiveCount() == 8);
+    complexity->type.setValue(Complexity::BOUNDING_BOX); // Coin's render takes 0.5
+    CHECK(cone->mesh(state).primitiveCount() == 20);
+}
+
+TEST_CASE("SCREEN_SPACE complexity follows the projected size as Coin's") {
+    // An orthographic view 20 units across on 500 x 500 pixels: 25 pixels a unit. Coin's
+    // value: sqrt(the larger side of the projected box in pixels) * 0.4 * value.
+    auto complexity = Complexity::create();
+    complexity->type.setValue(Complexity::SCREEN_SPACE);
+    complexity->value = 0.5f;
+    auto sphere = Sphere::create();
+    State state;
+    state.add(*complexity);
+    StateView view;
+    view.projected = true;
+    view.projection = glm::dmat4(1.0);
+    view.projection[0][0] = view.projection[1][1] = view.projection[2][2] = 0.1;
+    view.width = view.height = 500;
+    state.setView(view);
+    // Radius 0.1: 5 pixels, sqrt(5) * 0.2 = 0.447: 13 slices, 13 rings (12 bands).
+    sphere->radius = 0.1f;
+    CHECK(sphere->mesh(state).primitiveCount() == std::size_t(2 * 13 * (12 - 1)));
+    // Radius 1: 50 pixels, 1.41 clamped to 1: 30 x 29.
+    sphere->radius = 1.0f;
+    CHECK(sphere->mesh(state).primitiveCount() == std::size_t(2 * 30 * (29 - 1)));
+    state.setModelMatrix(glm::scale(glm::dmat4(1.0), glm::dvec3(0.2)));
+    // 10 pixels: sqrt(10) * 0.2 = 0.632: 18 slices, 18 rings.
+    CHECK(sphere->mesh(state).primitiveCount() == std::size_t(2 * 18 * (17 - 1)));
+    // A cone of radius 1 and height 2 at that scale: 10 pixels, 0.632 * 40 = 25 sides.
+    auto cone = Cone::create();
+    cone->parts.setValue(Cone::SIDES);
+    CHECK(cone->mesh(state).primitiveCount() == 25);
 }
 
 TEST_CASE("shape mesh is rebuilt when a field changes") {

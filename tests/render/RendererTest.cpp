@@ -129,11 +129,11 @@ TEST_CASE("a frame where nothing changed uploads no mesh and compiles no shader"
     auto scene = mixedScene();
     const Image first = renderer.render(*scene, smallOptions());
     const RenderStats after1 = renderer.stats();
-    CHECK(after1.programBuilds == 1);
-    CHECK(after1.meshUploads == 3); // sphere, cube, box
+    CHECK(after1.programBuilds == 2); // the shape program and its instanced variant
+    CHECK(after1.meshUploads == 3);   // sphere, cube, box
     const Image second = renderer.render(*scene, smallOptions());
     CHECK(renderer.stats().meshUploads == after1.meshUploads);
-    CHECK(renderer.stats().programBuilds == 1);
+    CHECK(renderer.stats().programBuilds == 2);
     CHECK(renderer.stats().frames == 2);
     CHECK(differingPixels(first, second) == 0);
     // A resized target re-renders the same scene without new meshes either.
@@ -151,11 +151,14 @@ TEST_CASE("a changed shape is uploaded again and its old mesh is dropped") {
     RenderOptions options = smallOptions(40, 40);
     renderer.render(*root, options);
     CHECK(renderer.stats().meshUploads == 1);
-    CHECK(renderer.stats().cachedEntries == 1);
+    const std::size_t entries = renderer.stats().cachedEntries; // the mesh, the root's cache
+    const std::size_t meshBytes = renderer.stats().meshBytes;
+    CHECK(meshBytes > 0);
     cube->width = 1.0f;
     const Image image = renderer.render(*root, options);
     CHECK(renderer.stats().meshUploads == 2);
-    CHECK(renderer.stats().cachedEntries == 1); // the old width's mesh is gone
+    CHECK(renderer.stats().cachedEntries == entries); // the old width's mesh is gone
+    CHECK(renderer.stats().meshBytes == meshBytes);
     // The new size is what is drawn: 1 unit wide at 10 px per unit.
     int covered = 0;
     for (int x = 0; x < 40; ++x)
@@ -174,8 +177,8 @@ TEST_CASE("a node removed from the scene is released by the renderer after one f
     CHECK(cube->refCount() > 2); // the scene, this test and the renderer's cache
     root->removeChild(1);
     renderer.render(*root, smallOptions(16, 16));
-    CHECK(renderer.stats().cachedEntries == 0);
-    CHECK(cube->refCount() == 1); // only this test holds it now
+    CHECK(renderer.stats().meshBytes == 0); // the root's render cache remains, empty
+    CHECK(cube->refCount() == 1);           // only this test holds it now
 }
 
 TEST_CASE("renderToBoundFramebuffer blits the frame into the framebuffer bound before") {

@@ -8,6 +8,7 @@
 #include <volsg/image/Image.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/Complexity.h>
 #include <volsg/nodes/Coordinate3.h>
 #include <volsg/nodes/Cube.h>
 #include <volsg/nodes/IndexedFaceSet.h>
@@ -246,12 +247,15 @@ TEST_CASE("six clip planes at once cut a sphere to the analytic region") {
         clip->plane = Plane{n, d};
         root->addChild(clip);
     };
-    addPlane({1, 0, 0}, -0.5f);   // x >= -0.5
-    addPlane({-1, 0, 0}, -0.5f);  // x <= 0.5
-    addPlane({0, 1, 0}, -0.25f);  // y >= -0.25
-    addPlane({0, -1, 0}, -0.25f); // y <= 0.25
-    addPlane({0, 0, -1}, -0.9f);  // z <= 0.9: the front cap r < sqrt(0.19) is gone
-    addPlane({0, 0, 1}, -0.95f);  // z >= -0.95: the back cap r < sqrt(0.0975) is gone
+    addPlane({1, 0, 0}, -0.5f);       // x >= -0.5
+    addPlane({-1, 0, 0}, -0.5f);      // x <= 0.5
+    addPlane({0, 1, 0}, -0.25f);      // y >= -0.25
+    addPlane({0, -1, 0}, -0.25f);     // y <= 0.25
+    addPlane({0, 0, -1}, -0.9f);      // z <= 0.9: the front cap r < sqrt(0.19) is gone
+    addPlane({0, 0, 1}, -0.95f);      // z >= -0.95: the back cap r < sqrt(0.0975) is gone
+    auto fine = Complexity::create(); // Coin's finest sphere (30 x 29): close to the true one
+    fine->value = 1.0f;
+    root->addChild(fine);
     auto sphere = Sphere::create();
     root->addChild(sphere);
     RenderOptions options;
@@ -359,8 +363,10 @@ TEST_CASE("the same node added twice under two Transforms draws twice") {
         CHECK(glm::vec3(image.at(p.x, p.y)) == glm::vec3(0.0f, 0.0f, 1.0f));
     }
     CHECK(isBackground(image, pixelAt(0.0, 0.0, 8.0, 80)));
-    CHECK(gl.renderer.stats().shapeDraws == 2);
-    CHECK(gl.renderer.stats().meshUploads == 1); // one mesh, drawn twice
+    // One mesh, drawn twice: one instanced draw of two shapes.
+    CHECK(gl.renderer.stats().shapeDraws == 1);
+    CHECK(gl.renderer.stats().batchedShapes == 2);
+    CHECK(gl.renderer.stats().meshUploads == 1);
 }
 
 TEST_CASE("a sphere under a DirectionalLight follows Lambert's law") {
@@ -375,6 +381,9 @@ TEST_CASE("a sphere under a DirectionalLight follows Lambert's law") {
     material->diffuseColor = {glm::vec3(1.0f)};
     material->ambientColor = {glm::vec3(0.0f)};
     root->addChild(material);
+    auto fine = Complexity::create(); // Coin's finest sphere (30 x 29)
+    fine->value = 1.0f;
+    root->addChild(fine);
     root->addChild(Sphere::create());
     RenderOptions options;
     options.width = size;
@@ -401,7 +410,10 @@ TEST_CASE("a sphere under a DirectionalLight follows Lambert's law") {
                 ++checked;
             }
         CHECK(checked > 4000);
-        CHECK(worst <= 2.0 / 255.0);
+        // Coin's finest sphere (30 x 29) lies up to 0.55% inside the true one and its
+        // interpolated normals lean by up to a few degrees near the silhouette: measured
+        // 0.0115 (2.9/255) at worst.
+        CHECK(worst <= 4.0 / 255.0);
     }
 }
 

@@ -118,6 +118,9 @@ TEST_CASE("the three section views share one data texture and one table in the r
     RenderOptions o;
     o.width = 64;
     o.height = 64;
+    // Separators' render caches are per Separator (each view's graph has its own); the GPU
+    // entries counted here are the programs and the volume's data and tables.
+    o.debug.renderCaching = false;
     auto renderSections = [&](int count, bool withScene) {
         gl.renderer.beginViewGroup();
         if (withScene) {

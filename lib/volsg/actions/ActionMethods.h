@@ -24,6 +24,12 @@ public:
     }
     /// Runs the method for `node`'s type, or node.doAction(action) if there is none.
     void apply(Action& action, Node& node) const;
+    /// Whether nodes of `type` run `method` (added for their type or the nearest ancestor).
+    template <class A, class N> bool runs(const NodeType& type, void (*method)(A&, N&)) const {
+        return find(type).function == reinterpret_cast<ErasedFunction>(method);
+    }
+    /// Whether nodes of `type` run a method (false: Node::doAction).
+    bool hasMethod(const NodeType& type) const { return find(type).function != nullptr; }
 
 private:
     using ErasedFunction = void (*)();

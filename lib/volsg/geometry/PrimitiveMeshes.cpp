@@ -119,9 +119,11 @@ void buildSphereMesh(float radius, int slices, int stacks, Mesh& out) {
                                            : std::cos(theta);
         const double s = (i == 0 || i == stacks) ? 0.0 : 2 * i == stacks ? 1.0 : std::sin(theta);
         const double t = 1.0 - double(i) / stacks;
+        // The top pole's vertex j serves slice j - 1, the bottom pole's slice j.
+        const double poleShift = i == 0 ? -0.5 : i == stacks ? 0.5 : 0.0;
         for (std::size_t j = 0; j < dirs.size(); ++j) {
             const glm::dvec3 n(s * dirs[j].x, y, s * dirs[j].z);
-            addVertex(out, r * n, n, {ringS(j, dirs.size()), t});
+            addVertex(out, r * n, n, {(double(j) + poleShift) / slices, t});
         }
     }
     for (int i = 0; i < stacks; ++i) {
@@ -203,9 +205,27 @@ void buildCylinderMesh(float radius, float height, bool sides, bool top, bool bo
     }
 }
 
+namespace {
+
+/// Coin's (int)(n * c) in float, as SoSphere, SoCone and SoCylinder compute it; a value that is
+/// not finite counts as the default 0.5.
+int coinCount(float n, float complexity, float highest) {
+    const float c = std::isfinite(complexity) ? std::clamp(complexity, 0.0f, highest) : 0.5f;
+    return int(n * c);
+}
+
+} // namespace
+
+int sphereSlicesFor(float complexity) {
+    return std::clamp(coinCount(30.0f, complexity, 1.0f), 4, 128);
+}
+
+int sphereStacksFor(float complexity) {
+    return std::max(3, coinCount(30.0f, complexity, 1.0f)) - 1;
+}
+
 int roundSlicesFor(float complexity) {
-    const double c = std::isfinite(complexity) ? std::clamp(double(complexity), 0.0, 1.0) : 0.5;
-    return std::max(6, int(std::lround(2.0 * c * kRoundSlices)));
+    return std::clamp(coinCount(40.0f, complexity, 4.0f), 4, 128);
 }
 
 } // namespace volsg

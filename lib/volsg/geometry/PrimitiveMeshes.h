@@ -10,14 +10,15 @@
 
 namespace volsg {
 
-/// Tessellation at Complexity 0.5 (the default): fine enough that smooth shading shows no
-/// facets at ordinary sizes. The sphere's largest distance from the true surface is
-/// r * (1 - cos(pi/slices) * cos(pi/(2*stacks))), about 0.0024 r for 64 x 32.
-inline constexpr int kRoundSlices = 64;  ///< around the Y axis (sphere, cone, cylinder)
-inline constexpr int kSphereStacks = 32; ///< pole to pole
-
-/// Slices around Y for a Complexity value in [0, 1]: kRoundSlices at 0.5, proportional to it,
-/// at least 6 (so even a complexity of 0 keeps a round outline, as Inventor's does).
+/// Coin's tessellation of the round primitives at a complexity value c (SoSphere, SoCone,
+/// SoCylinder and sogl_render_* in Coin 4): a sphere has (int)(30 c) slices and (int)(30 c)
+/// rings pole to pole (c clamped to [0, 1]), so 15 x 14 bands at the default 0.5; cones and
+/// cylinders (int)(40 c) sides (20 at 0.5; c not clamped). Slices are at least 4 and at most
+/// 128, rings at least 3.
+int sphereSlicesFor(float complexity);
+/// Bands pole to pole (Coin's rings minus one): at least 2.
+int sphereStacksFor(float complexity);
+/// Sides of a cone or cylinder.
 int roundSlicesFor(float complexity);
 
 /// Where each part of a primitive starts among the mesh's vertices (for PER_PART materials):
@@ -30,9 +31,10 @@ using PartStarts = std::vector<std::uint32_t>;
 /// bottom: seen with the front face below).
 void buildBoxMesh(const glm::vec3& size, Mesh& out, PartStarts* faces = nullptr);
 
-/// A UV sphere: `stacks` rings from +Y to -Y, `slices` around Y starting at the back (-Z) and
+/// A UV sphere: `stacks` bands from +Y to -Y, `slices` around Y starting at the back (-Z) and
 /// turning counter-clockwise seen from +Y (towards -X). Every vertex lies on the sphere and its
-/// normal is the radial direction. Texture: s 0..1 around from the back, t 0..1 bottom to top.
+/// normal is the radial direction. Texture: s 0..1 around from the back, t 0..1 bottom to top;
+/// at a pole s is the middle of its slice (as Coin's).
 void buildSphereMesh(float radius, int slices, int stacks, Mesh& out);
 
 /// A cone along +Y: apex at +height/2, base circle of `bottomRadius` at -height/2. The sides

@@ -3,6 +3,7 @@
 // target, the per-context caches and the shape renderer. Traversals (RenderAction, above the
 // node types) fill it; engines in lib/ read it and know nothing of nodes.
 
+#include <cstddef>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -13,6 +14,7 @@ namespace volsg {
 
 class RenderTarget;
 class ShapeRenderer;
+struct RenderRecording;
 
 /// The passes of one frame, in order (docs/SCENE-FORMAT.md section 4.8). The Renderer sets
 /// this GL state before each, and whatever changes it restores it:
@@ -63,6 +65,15 @@ struct RenderDebug {
     int max3DTextureSize = 0;
     /// ShearWarpVolume: the widest vector kernels this CPU runs (false: the scalar ones).
     bool vectorKernels = true;
+    /// Frames without volumes draw into an 8-bit target, as Coin's window does (off by
+    /// default: it quantises colours to 1/255, and saved nothing measurable on llvmpipe).
+    bool byteTarget = false;
+    /// Separators whose subgraph does not change replay what they drew (render caches).
+    bool renderCaching = true;
+    /// Separators with a valid render cache whose box lies outside the view are not drawn.
+    bool renderCulling = true;
+    /// Opaque shapes are drawn batched: instanced draws grouped by state (ShapeRenderer).
+    bool batchShapes = true;
 };
 
 /// The frame being drawn, as engines see it.
@@ -79,6 +90,19 @@ struct FrameContext {
     RenderDebug debug;
     /// Volume nodes drawn so far in this frame, every USE counted (limits::maxVolumeInstances).
     std::uint64_t volumeInstances = 0;
+    /// Set by the render methods of volumes and sections (in every pass) when they find one:
+    /// the frame needs the float target (an 8-bit one would quantise their compositing).
+    bool floatTargetNeeded = false;
+    /// Which render this is (from 1, per process; 0: render caches are not used, as in an
+    /// Annotation's own traversal): a Separator's cache checked in this render's opaque pass
+    /// serves its other passes.
+    std::uint64_t renderSerial = 0;
+    /// The render caches being recorded (innermost), or null (nodes/volsg/render/RenderCaching.h).
+    RenderRecording* recording = nullptr;
+    /// Shapes replayed from render caches in this render (all passes).
+    std::size_t replayedShapes = 0;
+    /// Separators left out in this render because their cached bounds lie outside the view.
+    std::size_t culledSeparators = 0;
 };
 
 } // namespace volsg

@@ -6,8 +6,8 @@
 
 namespace volsg {
 
-void RenderTarget::resize(int width, int height) {
-    if (width == width_ && height == height_ && framebuffer_) return;
+void RenderTarget::resize(int width, int height, bool floatColor) {
+    if (width == width_ && height == height_ && floatColor == floatColor_ && framebuffer_) return;
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (width <= 0 || height <= 0 || width > maxSize || height > maxSize)
@@ -20,20 +20,23 @@ void RenderTarget::resize(int width, int height) {
         color_.setFilter(GL_NEAREST, GL_NEAREST);
         depth_.setFilter(GL_NEAREST, GL_NEAREST);
     }
-    color_.image2D(GL_RGBA32F, width, height, GL_RGBA, GL_FLOAT, nullptr);
+    color_.image2D(floatColor ? GL_RGBA32F : GL_RGBA8, width, height, GL_RGBA,
+                   floatColor ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
     depth_.image2D(GL_DEPTH_COMPONENT32F, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
     framebuffer_.attach(GL_COLOR_ATTACHMENT0, color_);
     framebuffer_.attach(GL_DEPTH_ATTACHMENT, depth_);
     framebuffer_.requireComplete("render target");
     width_ = width;
     height_ = height;
+    floatColor_ = floatColor;
+    samples_ = 0; // the multisampled companion no longer matches: setMultisample remakes it
 }
 
 int RenderTarget::setMultisample(int samples) {
     if (samples > 1) {
         GLint maxSamples = 0, colorSamples = 0, depthSamples = 0;
         glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
-        glGetInternalformativ(GL_RENDERBUFFER, GL_RGBA32F, GL_SAMPLES, 1, &colorSamples);
+        glGetInternalformativ(GL_RENDERBUFFER, colorFormat(), GL_SAMPLES, 1, &colorSamples);
         glGetInternalformativ(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, GL_SAMPLES, 1, &depthSamples);
         samples = std::min({samples, int(maxSamples), int(colorSamples), int(depthSamples)});
     }
@@ -47,7 +50,7 @@ int RenderTarget::setMultisample(int samples) {
     if (samples == samples_ && multisampleColor_.width() == width_ &&
         multisampleColor_.height() == height_)
         return samples_;
-    multisampleColor_ = Renderbuffer(GL_RGBA32F, width_, height_, samples);
+    multisampleColor_ = Renderbuffer(colorFormat(), width_, height_, samples);
     multisampleDepth_ = Renderbuffer(GL_DEPTH_COMPONENT32F, width_, height_, samples);
     if (!multisampleFramebuffer_) multisampleFramebuffer_ = Framebuffer::create();
     multisampleFramebuffer_.attach(GL_COLOR_ATTACHMENT0, multisampleColor_);

@@ -1,5 +1,5 @@
 #pragma once
-// The offscreen target of a render: float colour and depth, resized on demand.
+// The offscreen target of a render: 8-bit or float colour, float depth, resized on demand.
 
 #include <volsg/gl/Framebuffer.h>
 #include <volsg/gl/Renderbuffer.h>
@@ -7,15 +7,18 @@
 
 namespace volsg {
 
-/// A framebuffer with a GL_RGBA32F colour texture (linear values, unclamped, so blending and
-/// volume compositing do not quantise) and a GL_DEPTH_COMPONENT32F depth texture (textures,
-/// not renderbuffers, so that later passes can sample the opaque depth). Sampling the depth
-/// texture while it is attached to the bound framebuffer is a feedback loop (undefined in
-/// GL): copy it first, or detach it for that draw.
+/// A framebuffer with a colour texture, GL_RGBA32F (linear values, unclamped, so blending and
+/// volume compositing do not quantise) or GL_RGBA8 (what a window holds: a quarter of the
+/// bytes to clear, blend and resolve, for frames without volumes), and a GL_DEPTH_COMPONENT32F
+/// depth texture (textures, not renderbuffers, so that later passes can sample the opaque depth).
+/// Sampling the depth texture while it is attached to the bound framebuffer is a feedback loop
+/// (undefined in GL): copy it first, or detach it for that draw.
 class RenderTarget {
 public:
-    /// Makes the target width x height (reallocating only when the size changes).
-    void resize(int width, int height);
+    /// Makes the target width x height with float (GL_RGBA32F) or 8-bit (GL_RGBA8) colour,
+    /// reallocating only when the size or the format changes.
+    void resize(int width, int height, bool floatColor = true);
+    bool floatColor() const { return floatColor_; }
     /// Binds for drawing and reading.
     void bind() const { framebuffer_.bind(); }
 
@@ -25,10 +28,11 @@ public:
     const Texture& colorTexture() const { return color_; }
     const Texture& depthTexture() const { return depth_; }
 
-    /// A multisampled companion of the same size (GL_RGBA32F colour and GL_DEPTH_COMPONENT32F
-    /// depth renderbuffers) for a pass drawn with multisample antialiasing, then resolved into
-    /// this target. `samples` is clamped to what GL allows for both formats (GL_MAX_SAMPLES,
-    /// 4 on llvmpipe); <= 1 frees it. Call after resize(). Returns the sample count in use.
+    /// A multisampled companion of the same size (colour of the same format and
+    /// GL_DEPTH_COMPONENT32F depth renderbuffers) for a pass drawn with multisample antialiasing,
+    /// then resolved into this target. `samples` is clamped to what GL allows for both formats
+    /// (GL_MAX_SAMPLES, 4 on llvmpipe); <= 1 frees it. Call after resize(). Returns the sample
+    /// count in use.
     int setMultisample(int samples);
     int samples() const { return samples_; }
     /// Binds the multisampled framebuffer for drawing and reading (setMultisample first).
@@ -39,10 +43,13 @@ public:
     void resolveMultisample();
 
 private:
+    GLenum colorFormat() const { return floatColor_ ? GL_RGBA32F : GL_RGBA8; }
+
     Framebuffer framebuffer_;
     Texture color_;
     Texture depth_;
     int width_ = 0, height_ = 0;
+    bool floatColor_ = true;
     Framebuffer multisampleFramebuffer_;
     Renderbuffer multisampleColor_, multisampleDepth_;
     int samples_ = 0;

@@ -65,8 +65,8 @@ std::string prelude(int maxClipPlanes) {
 }
 
 Program surfaceProgram(const char* vertex, const char* fragment, int maxClipPlanes,
-                       std::string_view name) {
-    const std::string p = prelude(maxClipPlanes);
+                       std::string_view name, std::string_view defines) {
+    const std::string p = prelude(maxClipPlanes) + std::string(defines);
     const Shader vertexShader(GL_VERTEX_SHADER, p + surfaceVertex + vertex, name);
     const Shader fragmentShader(GL_FRAGMENT_SHADER, p + surfaceFragment + fragment, name);
     return Program({&vertexShader, &fragmentShader}, name);

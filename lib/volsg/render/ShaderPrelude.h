@@ -56,11 +56,12 @@ namespace shaders {
 /// "#version 330 core" and the MAX_LIGHTS and MAX_CLIP_PLANES defines, in front of every stage.
 std::string prelude(int maxClipPlanes);
 
-/// A surface program: each stage is the prelude, the shared code (SurfaceShaders.h:
+/// A surface program: each stage is the prelude, `defines` ("#define INSTANCED\n"), the shared
+/// code (SurfaceShaders.h:
 /// surfaceVertex, surfaceFragment) and the stage's own source. A failed compile or link throws
 /// Error naming `name`.
 Program surfaceProgram(const char* vertex, const char* fragment, int maxClipPlanes,
-                       std::string_view name);
+                       std::string_view name, std::string_view defines = {});
 
 } // namespace shaders
 

@@ -21,14 +21,9 @@ glm::mat3 normalMatrixOf(const glm::dmat4& model) {
 
 } // namespace
 
-ShapeRenderer::ShapeRenderer() {
-    maxClipPlanes_ = queryMaxClipPlanes(kMaxClipPlanes);
-    program_ = shaders::surfaceProgram(shaders::shapeVertex, shaders::shapeFragment, maxClipPlanes_,
-                                       "shape");
-    ++programBuilds_;
-    const Program& p = program_;
+ShapeRenderer::Locations ShapeRenderer::locate(const Program& p) const {
     auto at = [&p](const char* name) { return p.uniformLocation(name); };
-    loc_ = {at("uModel"),         at("uNormalMatrix"),  at("uViewProjection"),
+    return {at("uModel"),         at("uNormalMatrix"),  at("uViewProjection"),
             at("uView"),          at("uTextureMatrix"), at("uLit"),
             at("uHasNormals"),    at("uHasColors"),     at("uEmissive"),
             at("uAmbient"),       at("uDiffuse"),       at("uSpecular"),
@@ -37,8 +32,23 @@ ShapeRenderer::ShapeRenderer() {
             at("uTextureModel"),  at("uSphereMap"),     at("uTexture"),
             at("uBlendColor"),    at("uFogType"),       at("uFogColor"),
             at("uFogVisibility"), at("uTwoSided"),      SurfaceScope::Locations::of(p)};
-    p.use();
-    glUniform1i(loc_.texture, 0);
+}
+
+ShapeRenderer::ShapeRenderer() {
+    maxClipPlanes_ = queryMaxClipPlanes(kMaxClipPlanes);
+    program_ = shaders::surfaceProgram(shaders::shapeVertex, shaders::shapeFragment, maxClipPlanes_,
+                                       "shape");
+    instancedProgram_ =
+        shaders::surfaceProgram(shaders::shapeVertex, shaders::shapeFragment, maxClipPlanes_,
+                                "instanced shape", "#define INSTANCED\n");
+    programBuilds_ += 2;
+    loc_ = locate(program_);
+    instancedLoc_ = locate(instancedProgram_);
+    for (const Program* p : {&program_, &instancedProgram_}) {
+        p->use();
+        glUniform1i(p->uniformLocation("uTexture"), 0);
+    }
+    instanceBuffer_ = Buffer(GL_ARRAY_BUFFER);
 }
 
 void ShapeRenderer::upload(GpuMesh& gpu, const Mesh& mesh) {
@@ -50,14 +60,22 @@ void ShapeRenderer::beginFrame(const RenderView& view) {
     view_ = view;
     transparentQueue_.clear();
     drawsLastFrame_ = 0;
+    batchesLastFrame_ = batchedShapesLastFrame_ = 0;
+    scopes_.clear();
+    batches_.clear();
+    batchIndex_.clear();
+    batched_.clear();
     // Per-frame uniforms are program state: set once, they survive other programs' use.
-    program_.use();
     const glm::mat4 viewProjection(view.projection * view.view);
-    glUniformMatrix4fv(loc_.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
     const glm::vec4 viewer(view.viewer);
-    glUniform4fv(loc_.viewer, 1, glm::value_ptr(viewer));
     const glm::mat4 eye(view.view);
-    glUniformMatrix4fv(loc_.view, 1, GL_FALSE, glm::value_ptr(eye));
+    for (const auto& [program, at] :
+         {std::pair{&program_, &loc_}, std::pair{&instancedProgram_, &instancedLoc_}}) {
+        program->use();
+        glUniformMatrix4fv(at->viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
+        glUniform4fv(at->viewer, 1, glm::value_ptr(viewer));
+        glUniformMatrix4fv(at->view, 1, GL_FALSE, glm::value_ptr(eye));
+    }
 }
 
 void ShapeRenderer::beginPass() {
@@ -70,12 +88,17 @@ void ShapeRenderer::endFrame() {
     glUseProgram(0);
     VertexArray::unbind();
     transparentQueue_.clear();
+    batches_.clear();
+    batchIndex_.clear();
+    batched_.clear();
 }
 
 void ShapeRenderer::submit(const FrameContext& frame, const GpuMesh& gpu, const ShapeLook& look) {
     if (gpu.indexCount == 0 || look.style == ShapeLook::Style::Invisible) return;
     const bool transparent = look.material.transparency > 0.0f || gpu.hasTranslucentColors;
-    if (frame.pass == RenderPass::Opaque && !transparent) {
+    if (frame.pass == RenderPass::Opaque && !transparent && batching_) {
+        batch(gpu, look);
+    } else if (frame.pass == RenderPass::Opaque && !transparent) {
         DrawItem item;
         fill(gpu, look, item);
         draw(item);
@@ -155,28 +178,39 @@ void ShapeRenderer::draw(const DrawItem& item) {
     }
     const GpuMesh& gpu = *item.mesh;
     program_.use();
-    glUniformMatrix4fv(loc_.model, 1, GL_FALSE, glm::value_ptr(item.model));
-    glUniformMatrix3fv(loc_.normalMatrix, 1, GL_FALSE, glm::value_ptr(item.normalMatrix));
-    glUniform1i(loc_.lit, item.lit ? 1 : 0);
-    glUniform1i(loc_.twoSided, item.twoSided ? 1 : 0);
-    glUniform1i(loc_.hasNormals, gpu.hasNormals ? 1 : 0);
-    glUniform1i(loc_.hasColors, gpu.hasColors ? 1 : 0);
-    glUniform3fv(loc_.emissive, 1, glm::value_ptr(item.emissive));
-    glUniform3fv(loc_.ambient, 1, glm::value_ptr(item.ambient));
-    glUniform3fv(loc_.diffuse, 1, glm::value_ptr(item.diffuse));
-    glUniform3fv(loc_.specular, 1, glm::value_ptr(item.specular));
-    glUniform1f(loc_.shininess, item.shininess);
-    glUniform1f(loc_.alpha, item.alpha);
-    item.scope.upload(loc_.scope);
+    applyState(loc_, item, true);
+    gpu.vertexArray.bind();
+    glDrawElements(gpu.mode, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+    restoreState(item);
+    ++drawsLastFrame_;
+}
+
+void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool withMaterial) {
+    const GpuMesh& gpu = *item.mesh;
+    if (withMaterial) {
+        glUniformMatrix4fv(at.model, 1, GL_FALSE, glm::value_ptr(item.model));
+        glUniformMatrix3fv(at.normalMatrix, 1, GL_FALSE, glm::value_ptr(item.normalMatrix));
+        glUniform3fv(at.emissive, 1, glm::value_ptr(item.emissive));
+        glUniform3fv(at.ambient, 1, glm::value_ptr(item.ambient));
+        glUniform3fv(at.diffuse, 1, glm::value_ptr(item.diffuse));
+        glUniform3fv(at.specular, 1, glm::value_ptr(item.specular));
+        glUniform1f(at.shininess, item.shininess);
+        glUniform1f(at.alpha, item.alpha);
+    }
+    glUniform1i(at.lit, item.lit ? 1 : 0);
+    glUniform1i(at.twoSided, item.twoSided ? 1 : 0);
+    glUniform1i(at.hasNormals, gpu.hasNormals ? 1 : 0);
+    glUniform1i(at.hasColors, gpu.hasColors ? 1 : 0);
+    item.scope.upload(at.scope);
     const int lights = item.scope.lightCount;
     if (lights > 0) {
-        glUniform4fv(loc_.spot, lights, glm::value_ptr(item.spots[0]));
-        glUniform1fv(loc_.spotExponent, lights, item.spotExponents.data());
+        glUniform4fv(at.spot, lights, glm::value_ptr(item.spots[0]));
+        glUniform1fv(at.spotExponent, lights, item.spotExponents.data());
     }
     const ShapeEnvironment& env = item.environment;
-    glUniform3fv(loc_.attenuation, 1, glm::value_ptr(env.attenuation));
-    glUniform1i(loc_.fogType, env.fogType);
-    glUniform3fv(loc_.fogColor, 1, glm::value_ptr(env.fogColor));
+    glUniform3fv(at.attenuation, 1, glm::value_ptr(env.attenuation));
+    glUniform1i(at.fogType, env.fogType);
+    glUniform3fv(at.fogColor, 1, glm::value_ptr(env.fogColor));
     // Fog without a visibility reaches the far plane; its distance is not known here, so the
     // renderer uses the eye distance to the far plane of the projection.
     float visibility = env.fogVisibility;
@@ -186,18 +220,18 @@ void ShapeRenderer::draw(const DrawItem& item) {
         visibility =
             orthographic ? float((p[3][2] - 1.0) / p[2][2]) : float(p[3][2] / (p[2][2] + 1.0));
     }
-    glUniform1f(loc_.fogVisibility, visibility);
-    glUniform1i(loc_.textureModel, item.textureModel);
+    glUniform1f(at.fogVisibility, visibility);
+    glUniform1i(at.textureModel, item.textureModel);
     if (item.textureModel >= 0) {
         item.texture->texture.bind(0);
-        glUniform1i(loc_.sphereMap, item.sphereMap ? 1 : 0);
-        glUniform3fv(loc_.blendColor, 1, glm::value_ptr(item.blendColor));
-        glUniformMatrix4fv(loc_.textureMatrix, 1, GL_FALSE, glm::value_ptr(item.textureMatrix));
+        glUniform1i(at.sphereMap, item.sphereMap ? 1 : 0);
+        glUniform3fv(at.blendColor, 1, glm::value_ptr(item.blendColor));
+        glUniformMatrix4fv(at.textureMatrix, 1, GL_FALSE, glm::value_ptr(item.textureMatrix));
     }
     setClipDistances(item.scope.clipPlaneCount);
 
-    // Draw style and culling are restored after the draw: the passes run with filled polygons,
-    // one-pixel lines and no culling.
+    // Draw style and culling are restored after the draw (restoreState): the passes run with
+    // filled polygons, one-pixel lines and no culling.
     const bool lines = item.style == ShapeLook::Style::Lines;
     const bool points = item.style == ShapeLook::Style::Points || gpu.mode == GL_POINTS;
     if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled)
@@ -209,8 +243,11 @@ void ShapeRenderer::draw(const DrawItem& item) {
         glCullFace(GL_BACK);
         glFrontFace(item.frontClockwise ? GL_CW : GL_CCW);
     }
-    gpu.vertexArray.bind();
-    glDrawElements(gpu.mode, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+}
+
+void ShapeRenderer::restoreState(const DrawItem& item) {
+    const GpuMesh& gpu = *item.mesh;
+    const bool points = item.style == ShapeLook::Style::Points || gpu.mode == GL_POINTS;
     if (item.cull) {
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
@@ -219,7 +256,6 @@ void ShapeRenderer::draw(const DrawItem& item) {
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     if (item.lineWidth != 1.0f) glLineWidth(1.0f);
     if (points && item.pointSize != 1.0f) glPointSize(1.0f);
-    ++drawsLastFrame_;
 }
 
 void ShapeTexture::upload(const ImageValue& image, bool repeatS, bool repeatT) {

@@ -6,10 +6,12 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include <volsg/gl/Buffer.h>
 #include <volsg/gl/Program.h>
 #include <volsg/gl/Texture.h>
 #include <volsg/render/FrameContext.h>
@@ -102,10 +104,21 @@ public:
 
     /// Puts `mesh` on the GPU into `gpu` (counted in meshUploads()).
     void upload(GpuMesh& gpu, const Mesh& mesh);
-    /// Draws `gpu` as `look` says: at once if it is opaque and this is the Opaque pass; queued
-    /// if it is transparent and this is the Transparent pass; not at all otherwise (nor when
-    /// its style is INVISIBLE). Throws Error for more clip planes or lights than it can draw.
+    /// Draws `gpu` as `look` says: if it is opaque and this is the Opaque pass, batched (below)
+    /// or at once; queued if it is transparent and this is the Transparent pass; not at all
+    /// otherwise (nor when its style is INVISIBLE). Throws Error for more clip planes or lights
+    /// than it can draw.
     void submit(const FrameContext& frame, const GpuMesh& gpu, const ShapeLook& look);
+
+    /// Batching of opaque shapes (on by default): submit() keeps them, and flushOpaque() draws
+    /// them grouped by everything but their model matrix and material (mesh, lights, clip
+    /// planes, texture, draw style, ...), one instanced draw per group with the matrices and
+    /// materials in a per-instance buffer, each group's shapes front to back. Off: each shape
+    /// is drawn when it is submitted (Annotations, whose shapes draw in scene order).
+    void setBatching(bool on) { batching_ = on; }
+    /// Draws the opaque shapes batched since the last flush (the Renderer calls it at the end
+    /// of the opaque pass).
+    void flushOpaque();
 
     /// Queues a draw that is not a shape's mesh (a glTF BLEND primitive) with the transparent
     /// shapes, sorted with them by `eyeDepth` (eye-space z, more negative = farther). It runs in
@@ -129,6 +142,11 @@ public:
     void endFrame();
 
     std::uint64_t meshUploads() const { return meshUploads_; }
+    /// Instanced draws made by flushOpaque() in this frame, and the shapes they drew.
+    std::size_t batchesLastFrame() const { return batchesLastFrame_; }
+    std::size_t batchedShapesLastFrame() const { return batchedShapesLastFrame_; }
+    /// Bytes of the per-instance buffer (model matrix and material per batched shape).
+    std::size_t instanceBytes() const { return instanceBuffer_.size(); }
     std::uint64_t programBuilds() const { return programBuilds_; }
     std::size_t drawsLastFrame() const { return drawsLastFrame_; }
 
@@ -164,11 +182,64 @@ private:
         SurfaceScope::Locations scope;
     };
 
+    /// One batched shape's own values, as the instanced program reads them (locations 4-11).
+    struct Instance {
+        glm::mat4 model;
+        glm::vec4 emissiveShininess, ambient, diffuseAlpha, specular;
+    };
+    /// What a batch's shapes share, compared bytewise (made with makeBatchKey, which zeroes the
+    /// padding): everything a DrawItem has but the model matrix and the material.
+    struct BatchKey {
+        const GpuMesh* mesh;
+        const ShapeTexture* texture;
+        int scope; ///< index into scopes_
+        int textureModel, style;
+        float lineWidth, pointSize;
+        std::uint8_t lit, cull, frontClockwise, sphereMap, twoSided;
+        glm::vec3 blendColor;
+        glm::mat4 textureMatrix;
+        glm::vec3 attenuation, fogColor;
+        int fogType;
+        float fogVisibility;
+    };
+    struct Batch {
+        BatchKey key;
+        DrawItem item;                    ///< the first shape's, for the shared uniforms
+        std::vector<std::size_t> members; ///< into batched_
+    };
+    struct Batched {
+        Instance instance;
+        float depth; ///< eye-space z of the bounds' centre (front first)
+    };
+    /// Lights and clip planes, interned per frame (shapes mostly share them).
+    struct Scope {
+        std::vector<SceneLight> lights;
+        std::vector<glm::dvec4> clipPlanes;
+    };
+
     void fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& item);
     void draw(const DrawItem& item);
+    /// Sets the uniforms and GL state of `item` but the model matrix and material (which
+    /// `withMaterial` adds) in the program in use, whose uniforms are at `at`.
+    void applyState(const Locations& at, const DrawItem& item, bool withMaterial);
+    /// Undoes what applyState changed beyond uniforms (culling, polygon mode, widths).
+    void restoreState(const DrawItem& item);
+    void batch(const GpuMesh& gpu, const ShapeLook& look);
+    int internScope(const ShapeLook& look, bool lit);
+    Locations locate(const Program& program) const;
 
     Program program_;
     Locations loc_{};
+    Program instancedProgram_;
+    Locations instancedLoc_{};
+    bool batching_ = true;
+    std::vector<Scope> scopes_;
+    std::vector<Batch> batches_;
+    std::unordered_map<std::uint64_t, std::size_t> batchIndex_; ///< key hash -> batches_
+    std::vector<Batched> batched_;
+    std::vector<Instance> instances_; ///< flushOpaque's upload, kept for its memory
+    Buffer instanceBuffer_;
+    std::size_t batchesLastFrame_ = 0, batchedShapesLastFrame_ = 0;
     int maxClipPlanes_ = 8;
     int enabledClipPlanes_ = 0;
     RenderView view_;

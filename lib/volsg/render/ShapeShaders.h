@@ -1,6 +1,7 @@
 #pragma once
 // GLSL of the shape program: Inventor's fixed-function Phong model, per fragment, with its
-// texture models, spot lights, environment (ambient light, attenuation, fog).
+// texture models, spot lights, environment (ambient light, attenuation, fog). With INSTANCED
+// defined, the model matrix and the material come per instance (batched draws).
 // Each stage follows the prelude and the shared surface code (SurfaceShaders.h).
 
 namespace volsg::shaders {
@@ -14,7 +15,25 @@ uniform mat4 uTextureMatrix;
 out vec2 vTexCoord;
 out float vEyeDistance;
 
+#ifdef INSTANCED
+// The material per instance (ShapeRenderer's batched draws).
+layout(location = 8) in vec4 aEmissiveShininess;
+layout(location = 9) in vec4 aAmbient;
+layout(location = 10) in vec4 aDiffuseAlpha;
+layout(location = 11) in vec4 aSpecular;
+flat out vec4 vEmissiveShininess;
+flat out vec3 vAmbient;
+flat out vec4 vDiffuseAlpha;
+flat out vec3 vSpecular;
+#endif
+
 void main() {
+#ifdef INSTANCED
+    vEmissiveShininess = aEmissiveShininess;
+    vAmbient = aAmbient.rgb;
+    vDiffuseAlpha = aDiffuseAlpha;
+    vSpecular = aSpecular.rgb;
+#endif
     vec4 world = transformVertex();
     vColor = aColor;
     vTexCoord = (uTextureMatrix * vec4(aTexCoord0, 0.0, 1.0)).xy;
@@ -30,12 +49,25 @@ uniform bool uLit;        // false for lines and points without normals: emissiv
 uniform bool uHasNormals; // else flat normals from the screen-space derivatives
 uniform bool uHasColors;  // vertex colours replace the diffuse colour
 uniform bool uTwoSided;   // a face seen from behind is lit on that side (ShapeHints)
+#ifdef INSTANCED
+flat in vec4 vEmissiveShininess;
+flat in vec3 vAmbient;
+flat in vec4 vDiffuseAlpha;
+flat in vec3 vSpecular;
+#define uEmissive vEmissiveShininess.rgb
+#define uShininess vEmissiveShininess.a
+#define uAmbient vAmbient
+#define uDiffuse vDiffuseAlpha.rgb
+#define uAlpha vDiffuseAlpha.a
+#define uSpecular vSpecular
+#else
 uniform vec3 uEmissive;
 uniform vec3 uAmbient;    // material ambient times the environment's ambient light
 uniform vec3 uDiffuse;
 uniform vec3 uSpecular;
 uniform float uShininess; // the exponent: Inventor's shininess * 128
 uniform float uAlpha;     // 1 - transparency
+#endif
 uniform mat4 uView;
 uniform vec4 uSpot[MAX_LIGHTS];        // direction the spot points (xyz), cos of cut-off (w)
 uniform float uSpotExponent[MAX_LIGHTS];

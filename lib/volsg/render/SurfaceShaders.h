@@ -6,12 +6,17 @@
 namespace volsg::shaders {
 
 /// Vertex stage, after the prelude: the attributes both programs have (position 0, normal 1,
-/// first texture coordinates 3), the model, normal and view-projection matrices and the clip
-/// planes; transformVertex() writes the world position and normal, gl_ClipDistance and
-/// gl_Position, and returns the world position. The program sets vColor.
+/// first texture coordinates 3), the model (a uniform, or with INSTANCED defined a per-instance
+/// attribute at 4), normal and view-projection matrices and the clip planes; transformVertex()
+/// writes the world position and normal, gl_ClipDistance and gl_Position, and returns the world
+/// position. The program sets vColor.
 inline constexpr const char* surfaceVertex = R"GLSL(
+#ifdef INSTANCED
+layout(location = 4) in mat4 aModel; // per instance (locations 4 to 7)
+#else
 uniform mat4 uModel;
 uniform mat3 uNormalMatrix;
+#endif
 uniform mat4 uViewProjection;
 uniform vec4 uClipPlanes[MAX_CLIP_PLANES]; // world (n, d): keep dot(n, p) >= d
 uniform int uClipPlaneCount;
@@ -26,6 +31,12 @@ layout(location = 1) in vec3 aNormal;
 layout(location = 3) in vec2 aTexCoord0;
 
 vec4 transformVertex() {
+#ifdef INSTANCED
+    // The cofactor matrix of the model's 3x3 part maps normals (ShapeRenderer.cpp says why).
+    mat4 uModel = aModel;
+    mat3 m = mat3(aModel);
+    mat3 uNormalMatrix = mat3(cross(m[1], m[2]), cross(m[2], m[0]), cross(m[0], m[1]));
+#endif
     vec4 world = uModel * vec4(aPosition, 1.0);
     vWorldPosition = world.xyz;
     vWorldNormal = uNormalMatrix * aNormal;

@@ -1,5 +1,7 @@
 #include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/gltf/GltfAsset.h>
+#include <volsg/nodes/Cone.h>
+#include <volsg/nodes/Cylinder.h>
 #include <volsg/nodes/File.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/ObliqueSlice.h>
@@ -8,6 +10,7 @@
 #include <volsg/nodes/Separator.h>
 #include <volsg/nodes/Shape.h>
 #include <volsg/nodes/ShearWarpVolume.h>
+#include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Text2.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeData.h>
@@ -18,7 +21,19 @@ namespace volsg {
 
 namespace {
 
+/// The round primitives' tessellation lies inside them: their box is the analytic one
+/// (Coin's computeBBox), whatever the complexity.
+template <class Primitive> bool boundPrimitive(BoundingBoxAction& action, Shape& shape) {
+    if (!shape.isA<Primitive>()) return false;
+    if (!shape.mesh(action.state()).bounds().isEmpty())
+        action.extendByLocal(static_cast<Primitive&>(shape).objectBox());
+    return true;
+}
+
 void boundShape(BoundingBoxAction& action, Shape& shape) {
+    if (boundPrimitive<Sphere>(action, shape) || boundPrimitive<Cone>(action, shape) ||
+        boundPrimitive<Cylinder>(action, shape))
+        return;
     action.extendByLocal(shape.mesh(action.state()).bounds());
 }
 

@@ -5,10 +5,13 @@
 #include <limits>
 
 #include <volsg/geometry/RayIntersect.h>
+#include <volsg/geometry/RayQuadric.h>
 #include <volsg/gltf/GltfAsset.h>
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/Cone.h>
+#include <volsg/nodes/Cylinder.h>
 #include <volsg/nodes/File.h>
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/nodes/LOD.h>
@@ -17,6 +20,7 @@
 #include <volsg/nodes/OrthoSlice.h>
 #include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/Shape.h>
+#include <volsg/nodes/Sphere.h>
 #include <volsg/nodes/Text2.h>
 #include <volsg/nodes/TextFont.h>
 #include <volsg/render/InventorRendering.h>
@@ -95,6 +99,50 @@ void pickShape(PickAction& action, Shape& shape) {
         const glm::dvec3 point = (1.0 - hit->u - hit->v) * a + hit->u * b + hit->v * c;
         action.addLocalHit(point, glm::normalize(normal), i);
     }
+}
+
+/// Sphere, Cone and Cylinder are picked on their exact surfaces, as Coin picks them (not on the
+/// tessellation drawn, which changes with Complexity); the primitive index is the part (Cone:
+/// 0 sides, 1 bottom; Cylinder: 0 sides, 1 top, 2 bottom).
+template <class Round, class Intersect>
+void pickRound(PickAction& action, Round& shape, Intersect intersect) {
+    const PickStyle::Style style = PickStyle::inScope(action.state());
+    if (style == PickStyle::UNPICKABLE) return;
+    if (style == PickStyle::BOUNDING_BOX) return pickLocalBox(action, shape.objectBox());
+    const glm::dmat4& model = action.state().modelMatrix();
+    const double det = glm::determinant(model);
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return; // flattened: nothing to hit
+    const Ray local = action.worldRay().transformed(glm::inverse(model));
+    const auto add = [&](const std::vector<QuadricHit>& hits, std::size_t part) {
+        for (const QuadricHit& hit : hits)
+            action.addLocalHit(hit.point, hit.normal, part);
+    };
+    intersect(local, add);
+}
+
+void pickSphere(PickAction& action, Sphere& sphere) {
+    pickRound(action, sphere, [&](const Ray& ray, const auto& add) {
+        add(intersectSphere(ray, std::abs(double(sphere.radius()))), 0);
+    });
+}
+
+void pickCone(PickAction& action, Cone& cone) {
+    pickRound(action, cone, [&](const Ray& ray, const auto& add) {
+        const double r = std::abs(double(cone.bottomRadius())), h = std::abs(double(cone.height()));
+        if (cone.parts() & Cone::SIDES) add(intersectConeSide(ray, r, h), 0);
+        if (cone.parts() & Cone::BOTTOM) add(intersectDisc(ray, r, -0.5 * h, -1.0), 1);
+    });
+}
+
+void pickCylinder(PickAction& action, Cylinder& cylinder) {
+    pickRound(action, cylinder, [&](const Ray& ray, const auto& add) {
+        const double r = std::abs(double(cylinder.radius())),
+                     h = std::abs(double(cylinder.height()));
+        const int parts = cylinder.parts();
+        if (parts & Cylinder::SIDES) add(intersectCylinderSide(ray, r, h), 0);
+        if (h > 0.0 && (parts & Cylinder::TOP)) add(intersectDisc(ray, r, 0.5 * h, 1.0), 1);
+        if (h > 0.0 && (parts & Cylinder::BOTTOM)) add(intersectDisc(ray, r, -0.5 * h, -1.0), 2);
+    });
 }
 
 /// Text2 is hit where the ray, at the depth of the text's origin, falls in the screen rectangle
@@ -381,6 +429,9 @@ ActionMethods& PickAction::methods() {
     static ActionMethods* table = [] {
         auto* t = new ActionMethods(); // never destroyed: methods may run during exit
         t->add(&pickShape);
+        t->add(&pickSphere);
+        t->add(&pickCone);
+        t->add(&pickCylinder);
         t->add(&pickOrthoSlice);
         t->add(&pickObliqueSlice);
         t->add(&pickGltfModel);

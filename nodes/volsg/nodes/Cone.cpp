@@ -1,17 +1,29 @@
+#include <volsg/geometry/MeshKey.h>
 #include <volsg/geometry/PrimitiveMeshes.h>
 #include <volsg/nodes/Cone.h>
+#include <volsg/nodes/PrimitiveComplexity.h>
 #include <volsg/nodes/PrimitiveParts.h>
-#include <volsg/nodes/ShapeState.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace volsg {
 
 const EnumValues Cone::partNames{{"SIDES", SIDES}, {"BOTTOM", BOTTOM}, {"ALL", ALL}};
 
+Box3 Cone::objectBox() const {
+    const double r = std::abs(double(bottomRadius())), h = 0.5 * std::abs(double(height()));
+    return {glm::dvec3(-r, -h, -r), glm::dvec3(r, h, r)};
+}
+
+std::uint64_t Cone::meshKey(const State& state) const {
+    return combineMeshKey(Shape::meshKey(state),
+                          std::uint64_t(roundSlicesFor(primitiveComplexity(state, objectBox()))));
+}
+
 void Cone::buildMesh(const State& state, Mesh& out) const {
     const int p = parts();
-    const int slices = roundSlicesFor(gatherShapeState(state, nullptr).complexityValue());
+    const int slices = roundSlicesFor(primitiveComplexity(state, objectBox()));
     PartStarts starts;
     buildConeMesh(bottomRadius(), height(), (p & SIDES) != 0, (p & BOTTOM) != 0, slices, out,
                   &starts);

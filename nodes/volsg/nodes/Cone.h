@@ -1,7 +1,10 @@
 #pragma once
 // Cone along +Y, centred on the origin: apex at height/2, base at -height/2.
 #include <volsg/fields/Fields.h>
+#include <volsg/math/Box3.h>
 #include <volsg/nodes/Shape.h>
+
+#include <cstdint>
 
 namespace volsg {
 
@@ -14,6 +17,11 @@ public:
     SFBitMask parts{this, "parts", partNames, ALL};
     SFFloat bottomRadius{this, "bottomRadius", 1.0f};
     SFFloat height{this, "height", 2.0f};
+
+    /// Also the tessellation (SCREEN_SPACE complexity changes it with the view).
+    std::uint64_t meshKey(const State& state) const override;
+    /// The box the tessellation's screen size is measured by (Coin's computeBBox).
+    Box3 objectBox() const;
 
 protected:
     ~Cone() override = default;

@@ -7,6 +7,9 @@
 namespace volsg {
 
 void addShapeRenderMethods(ActionMethods& methods);
+void addSeparatorRenderMethods(ActionMethods& methods);
+/// Whether nodes of `type` draw with the shapes' render method (ShapeRendering.cpp).
+bool rendersAsShape(const NodeType& type);
 void addVolumeRenderMethods(ActionMethods& methods);
 void addShearWarpRenderMethods(ActionMethods& methods);
 void addSliceRenderMethods(ActionMethods& methods);
@@ -16,6 +19,7 @@ void addTextRenderMethods(ActionMethods& methods);
 
 inline void addBuiltinRenderMethods(ActionMethods& methods) {
     addShapeRenderMethods(methods);
+    addSeparatorRenderMethods(methods);
     addVolumeRenderMethods(methods);
     addShearWarpRenderMethods(methods);
     addSliceRenderMethods(methods);

@@ -65,7 +65,10 @@ thread_local bool drawingAnnotation = false;
 /// not hide each other by depth: later ones are drawn over earlier ones).
 void drawAnnotation(FrameContext& frame, const State& state, Annotation& node) {
     AnnotationShapes& own = frame.cache.shared<AnnotationShapes>();
-    if (!own.shapes) own.shapes = std::make_unique<ShapeRenderer>();
+    if (!own.shapes) {
+        own.shapes = std::make_unique<ShapeRenderer>();
+        own.shapes->setBatching(false); // no depth test: scene order decides
+    }
     ShapeRenderer& shapes = *own.shapes;
     FrameContext sub{frame.cache,
                      shapes,

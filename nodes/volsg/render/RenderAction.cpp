@@ -2,6 +2,7 @@
 #include <volsg/nodes/Light.h>
 #include <volsg/render/BuiltinRendering.h>
 #include <volsg/render/RenderAction.h>
+#include <volsg/render/RenderCaching.h>
 
 #include <algorithm>
 #include <string>
@@ -21,7 +22,20 @@ ActionMethods& RenderAction::methods() {
     return *table;
 }
 
+void RenderAction::beginTraversal(Node& root) {
+    StateView view;
+    view.eye = glm::dvec3(glm::inverse(frame_.view.view) * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    view.projected = true;
+    view.view = frame_.view.view;
+    view.projection = frame_.view.projection;
+    view.width = frame_.view.width;
+    view.height = frame_.view.height;
+    state().setView(view);
+    Action::beginTraversal(root);
+}
+
 void RenderAction::dispatch(Node& node) {
+    if (frame_.recording) noteForCache(*frame_.recording, node);
     methods().apply(*this, node);
 }
 

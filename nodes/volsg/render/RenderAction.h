@@ -33,6 +33,9 @@ public:
     const glm::dmat4& viewMatrix() const { return frame_.view.view; }
     const glm::dmat4& projectionMatrix() const { return frame_.view.projection; }
 
+    /// Says the frame draws a volume or section: it needs the float target. Volume render
+    /// methods call it in every pass, before anything else.
+    void needFloatTarget() { frame_.floatTargetNeeded = true; }
     /// Counts one more volume drawn in this frame; throws Error past limits::maxVolumeInstances
     /// (each volume costs a whole pass over its data: 100,000 USEs of one would never end).
     void countVolumeInstance();
@@ -44,6 +47,9 @@ public:
     void clipPlanesInScope(std::vector<glm::dvec4>& out) const;
 
 protected:
+    /// Gives the state the frame's view (projected, in pixels), as the shapes whose
+    /// tessellation follows the view (SCREEN_SPACE complexity) read it.
+    void beginTraversal(Node& root) override;
     void dispatch(Node& node) override;
 
 private:

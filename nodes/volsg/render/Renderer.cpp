@@ -9,8 +9,10 @@
 #include <volsg/render/RenderTarget.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/render/ShapeRenderer.h>
+#include <volsg/render/SharedMeshes.h>
 
 #include <algorithm>
+#include <atomic>
 
 namespace volsg {
 
@@ -128,6 +130,8 @@ struct Renderer::Impl {
     RenderTarget target;
     RenderStats stats;
     bool inViewGroup = false; ///< the cache frame spans several renders (beginViewGroup)
+    /// The last frame drew a volume: this one starts on the float target.
+    bool floatTarget = false;
 
     /// Draws one frame into `target` (left bound).
     void drawFrame(Node& root, const RenderOptions& options);
@@ -162,7 +166,8 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
                                     : glm::dvec4(glm::dvec3(eyeToWorld[3]), 1.0);
     view.headlight = !survey.hasLight();
 
-    target.resize(options.width, options.height);
+    const bool floatColor = floatTarget || !options.debug.byteTarget;
+    target.resize(options.width, options.height, floatColor);
     const bool multisample = target.setMultisample(options.samples) > 1;
     if (multisample)
         target.bindMultisample();
@@ -184,6 +189,9 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
                        options.interactive,
                        options.interactivePlaneScale,
                        options.debug};
+    static std::atomic<std::uint64_t> renders{0};
+    frame.renderSerial = ++renders;
+    shapes.setBatching(options.debug.batchShapes);
     RenderAction action(frame);
     for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
         // The multisampled opaque pass is resolved into the target for everything after it.
@@ -193,8 +201,18 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
         shapes.beginPass();
         action.setPass(pass);
         action.apply(root);
+        if (pass == RenderPass::Opaque) shapes.flushOpaque();
         if (pass == RenderPass::Transparent) shapes.drawQueuedTransparent();
+        if (pass == RenderPass::Opaque && frame.floatTargetNeeded && !floatColor) {
+            // A volume on an 8-bit target: start again on the float one (the opaque pass
+            // reaches every node the volume pass does, so nothing has been composited yet).
+            shapes.endFrame();
+            floatTarget = true;
+            drawFrame(root, options);
+            return;
+        }
     }
+    floatTarget = frame.floatTargetNeeded;
     shapes.endFrame();
     if (!inViewGroup) cache.endFrame();
 
@@ -205,6 +223,12 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     stats.programBuilds = shapes.programBuilds();
     stats.cachedEntries = cache.size();
     stats.shapeDraws = shapes.drawsLastFrame();
+    stats.batches = shapes.batchesLastFrame();
+    stats.replayedShapes = frame.replayedShapes;
+    stats.culledSeparators = frame.culledSeparators;
+    stats.batchedShapes = shapes.batchedShapesLastFrame();
+    stats.meshBytes = cache.shared<SharedMeshes>().bytes();
+    stats.instanceBytes = shapes.instanceBytes();
 }
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
@@ -249,24 +273,43 @@ Image Renderer::render(Node& root, const RenderOptions& options) {
 }
 
 void Renderer::render(Node& root, const RenderOptions& options, Image& into) {
+    renderFrame(root, options);
+    readImage(into);
+}
+
+void Renderer::renderFrame(Node& root, const RenderOptions& options) {
     const BoundFramebuffers caller;
     impl_->drawFrame(root, options);
-    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
+}
+
+Image Renderer::readImage() const {
+    Image image;
+    readImage(image);
+    return image;
+}
+
+void Renderer::readImage(Image& into) const {
+    const RenderTarget& target = impl_->target;
+    const int width = target.width(), height = target.height();
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
     if (into.pixels.size() != pixels) into.pixels.resize(pixels); // every pixel is read below
-    into.width = options.width;
-    into.height = options.height;
+    into.width = width;
+    into.height = height;
+    if (pixels == 0) return;
+    const BoundFramebuffers caller;
+    target.framebuffer().bind(GL_READ_FRAMEBUFFER);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     // GL's rows run bottom-up, the Image's top-down: Mesa's GL_MESA_pack_invert reads them in
     // the Image's order (no second pass over the pixels); elsewhere they are swapped after.
     const bool invert = GLAD_GL_MESA_pack_invert != 0;
     if (invert) glPixelStorei(GL_PACK_INVERT_MESA, GL_TRUE);
-    glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_FLOAT, into.pixels.data());
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, into.pixels.data());
     if (invert)
         glPixelStorei(GL_PACK_INVERT_MESA, GL_FALSE);
     else
-        flipRows(into.pixels, options.width, options.height);
-    checkGlError("Renderer::render");
+        flipRows(into.pixels, width, height);
+    checkGlError("Renderer::readImage");
 }
 
 void Renderer::renderToBoundFramebuffer(Node& root, const RenderOptions& options) {

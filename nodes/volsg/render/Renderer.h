@@ -39,10 +39,16 @@ struct RenderOptions {
 /// uploads no mesh and builds no program.
 struct RenderStats {
     std::uint64_t frames = 0;
-    std::uint64_t meshUploads = 0;   ///< meshes sent to the GPU since the Renderer was made
-    std::uint64_t programBuilds = 0; ///< shader programs compiled and linked since then
-    std::size_t cachedEntries = 0;   ///< per-node GPU caches alive after the last frame
-    std::size_t shapeDraws = 0;      ///< shape draw calls in the last frame
+    std::uint64_t meshUploads = 0;    ///< meshes sent to the GPU since the Renderer was made
+    std::uint64_t programBuilds = 0;  ///< shader programs compiled and linked since then
+    std::size_t cachedEntries = 0;    ///< per-node GPU caches alive after the last frame
+    std::size_t shapeDraws = 0;       ///< shape draw calls in the last frame
+    std::size_t batches = 0;          ///< instanced draws of batched opaque shapes, last frame
+    std::size_t batchedShapes = 0;    ///< the shapes those draws drew
+    std::size_t replayedShapes = 0;   ///< shapes drawn from Separators' render caches, last frame
+    std::size_t culledSeparators = 0; ///< Separators outside the view, not drawn, last frame
+    std::size_t meshBytes = 0;        ///< GPU bytes of the (shared) shape meshes alive
+    std::size_t instanceBytes = 0;    ///< GPU bytes of the per-instance buffer
 };
 
 /// Holds the GL resources (programs, meshes, targets) of one context across frames. Create
@@ -61,11 +67,19 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    /// Renders offscreen and reads the linear float result back.
+    /// Renders offscreen and reads the linear float result back (renderFrame, then readImage).
     Image render(Node& root, const RenderOptions& options);
     /// The same into `into`, whose storage is reused when it has the size already (a caller
     /// rendering frame after frame pays no allocation and no page faults for the image).
     void render(Node& root, const RenderOptions& options, Image& into);
+    /// Renders offscreen and reads nothing back: the frame stays in the Renderer's target
+    /// (readImage, readWindowDepth) until the next one. GL may still be drawing on return.
+    void renderFrame(Node& root, const RenderOptions& options);
+    /// The last frame's colour as linear floats, row 0 at the top (empty before the first).
+    /// From an 8-bit target (RenderTarget) the values are multiples of 1/255.
+    Image readImage() const;
+    /// The same into `into` (storage reused when it has the size already).
+    void readImage(Image& into) const;
     /// Renders into the framebuffer bound now (a window's back buffer), same image.
     void renderToBoundFramebuffer(Node& root, const RenderOptions& options);
 

@@ -1,8 +1,10 @@
 // Shapes draw their mesh, uploaded once per (node, mesh key) and kept in the frame's
 // RenderCache while the node is drawn, with what the state says they look like: material,
 // light model, draw style, shape hints, texture, environment, lights and clip planes.
+#include <memory>
 #include <vector>
 
+#include <volsg/nodes/Complexity.h>
 #include <volsg/nodes/DrawStyle.h>
 #include <volsg/nodes/Environment.h>
 #include <volsg/nodes/LightModel.h>
@@ -12,11 +14,14 @@
 #include <volsg/nodes/ShapeState.h>
 #include <volsg/nodes/Texture2.h>
 #include <volsg/nodes/TextureCoordinateEnvironment.h>
+#include <volsg/nodes/VertexProperty.h>
 #include <volsg/nodes/VertexShape.h>
 #include <volsg/render/BuiltinRendering.h>
 #include <volsg/render/GpuMesh.h>
 #include <volsg/render/RenderAction.h>
+#include <volsg/render/RenderCaching.h>
 #include <volsg/render/ShapeRenderer.h>
+#include <volsg/render/SharedMeshes.h>
 
 namespace volsg {
 
@@ -68,16 +73,25 @@ ShapeEnvironment environmentOf(const Environment* e) {
     return out;
 }
 
-ShapeTexturing texturingOf(FrameContext& frame, const ShapeState& shape) {
+/// A texture's GPU copy, held by the cache entry and by the render caches that use it.
+struct SharedTexture {
+    std::shared_ptr<ShapeTexture> gpu;
+};
+
+ShapeTexturing texturingOf(FrameContext& frame, const ShapeState& shape,
+                           std::shared_ptr<const ShapeTexture>* holder) {
     ShapeTexturing out;
     const Texture2* node = shape.texture;
     if (!node) return out;
     // One GPU copy per texture node and version (shared by every shape that uses it).
-    ShapeTexture& gpu = frame.cache.get<ShapeTexture>(*node, node->version());
-    if (!gpu.uploaded)
-        gpu.upload(node->texels(), node->wrapS() == Texture2::REPEAT,
-                   node->wrapT() == Texture2::REPEAT);
-    out.texture = &gpu;
+    SharedTexture& entry = frame.cache.get<SharedTexture>(*node, node->version());
+    if (!entry.gpu) {
+        entry.gpu = std::make_shared<ShapeTexture>();
+        entry.gpu->upload(node->texels(), node->wrapS() == Texture2::REPEAT,
+                          node->wrapT() == Texture2::REPEAT);
+    }
+    *holder = entry.gpu;
+    out.texture = entry.gpu.get();
     out.model = ShapeTexturing::Model(node->model());
     out.blendColor = node->blendColor();
     out.matrix = shape.textureMatrix;
@@ -93,8 +107,15 @@ void renderShape(RenderAction& action, Shape& shape) {
         shape.isA<VertexShape>() ? static_cast<VertexShape&>(shape).ownVertexProperty() : nullptr;
     const ShapeState scope = gatherShapeState(state, own);
     if (scope.drawStyle && scope.drawStyle->style() == DrawStyle::INVISIBLE) return;
-    GpuMesh& gpu = frame.cache.get<GpuMesh>(shape, shape.meshKey(state));
-    if (!gpu.uploaded) frame.shapes.upload(gpu, shape.mesh(state));
+    ShapeMesh& entry = frame.cache.get<ShapeMesh>(shape, shape.meshKey(state));
+    if (!entry.gpu)
+        entry.gpu = frame.cache.shared<SharedMeshes>().find(shape.mesh(state), frame.shapes);
+    const GpuMesh& gpu = *entry.gpu;
+    if (own && frame.recording) noteForCache(*frame.recording, *own); // a field, not a child
+    // A tessellation that follows the view cannot be replayed from another view (as Coin's
+    // sogl_render_* say DONT_AUTO_CACHE for SCREEN_SPACE).
+    if (frame.recording && scope.complexity && scope.complexity->type() == Complexity::SCREEN_SPACE)
+        frame.recording->cacheable = false;
     if (gpu.indexCount == 0) return;
 
     // Scratch kept across shapes: gathering allocates nothing per shape.
@@ -117,8 +138,13 @@ void renderShape(RenderAction& action, Shape& shape) {
         look.twoSidedLighting = ordering != ShapeHints::UNKNOWN_ORDERING &&
                                 scope.hints->shapeType() == ShapeHints::UNKNOWN_SHAPE_TYPE;
     }
-    look.texturing = texturingOf(frame, scope);
+    std::shared_ptr<const ShapeTexture> texture;
+    look.texturing = texturingOf(frame, scope, &texture);
     look.environment = environmentOf(scope.environment);
+    if (frame.recording && action.pass() == RenderPass::Opaque) {
+        const bool transparent = look.material.transparency > 0.0f || gpu.hasTranslucentColors;
+        frame.recording->shapes.push_back({entry.gpu, texture, look, transparent});
+    }
     action.lightsInScope(lights);
     action.clipPlanesInScope(clipPlanes);
     look.lights = lights;
@@ -130,6 +156,10 @@ void renderShape(RenderAction& action, Shape& shape) {
 
 void addShapeRenderMethods(ActionMethods& methods) {
     methods.add(&renderShape);
+}
+
+bool rendersAsShape(const NodeType& type) {
+    return RenderAction::methods().runs(type, &renderShape);
 }
 
 } // namespace volsg

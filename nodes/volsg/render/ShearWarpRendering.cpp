@@ -16,6 +16,7 @@ namespace volsg {
 namespace {
 
 void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
+    action.needFloatTarget();
     if (action.pass() != RenderPass::Volume) return;
     action.countVolumeInstance();
     const State& state = action.state();

@@ -11,6 +11,7 @@ namespace volsg {
 namespace {
 
 void renderOrthoSlice(RenderAction& action, OrthoSlice& slice) {
+    action.needFloatTarget();
     // The slice itself is not clipped by its own plane: it draws before the plane is in scope.
     if (const auto volume = gatherVolumeInScope(action.state()))
         SliceRenderer::draw(action.frame(), *volume, slice.localPlane(*volume->data),
@@ -19,6 +20,7 @@ void renderOrthoSlice(RenderAction& action, OrthoSlice& slice) {
 }
 
 void renderObliqueSlice(RenderAction& action, ObliqueSlice& slice) {
+    action.needFloatTarget();
     const auto plane = slice.localPlane();
     if (!plane) return;
     if (const auto volume = gatherVolumeInScope(action.state()))

@@ -37,6 +37,7 @@ SlicingSettings slicingSettings(const Volume& volume, const State& state,
 }
 
 void renderVolume(RenderAction& action, Volume& node) {
+    action.needFloatTarget();
     if (action.pass() != RenderPass::Volume) return;
     action.countVolumeInstance();
     // The node's share of the per-frame CPU time: gathering its state (added to the slicer's).
