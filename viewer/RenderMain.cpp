@@ -4,6 +4,7 @@
 #include <string>
 
 #include "CommandLine.h"
+#include "VolumeReport.h"
 #include <volsg/context/Context.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/SceneReader.h>
@@ -20,7 +21,7 @@ const char* usage =
     "  (SCENE: a scene file or a .vsgv voxel-list file written by volsg-pack)\n"
     "                    [--background R,G,B] [--reference [--tolerance T]]\n"
     "                    [--stereo anaglyph|side-by-side [--eye-separation F]]\n"
-    "                    [--interactive]\n"
+    "                    [--interactive] [--verbose]\n"
     "  --reference   render the volumes with the CPU reference ray caster (docs/SCENE-FORMAT.md\n"
     "                section 4) over GL's opaque geometry; prints the error bound reached\n"
     "  --tolerance   the reference's per-pixel convergence tolerance (default 1e-4)\n"
@@ -30,7 +31,9 @@ const char* usage =
     "  --eye-separation  the eye separation as a fraction of focalDistance (default 1/30)\n"
     "  --interactive the frame the viewer draws while the user drags: volumes use their\n"
     "                interactive settings (Volume.interactivePlanes,\n"
-    "                ShearWarpVolume.interactiveSliceStep)\n";
+    "                ShearWarpVolume.interactiveSliceStep)\n"
+    "  --verbose     print per volume node the settings it drew with and the error it predicts\n"
+    "                against the rendering model (Volume.errorTarget)\n";
 
 double parseTolerance(const std::string& text) {
     char* end = nullptr;
@@ -44,7 +47,7 @@ int run(volsg::cli::Arguments& args) {
     std::string scene, output;
     volsg::RenderOptions options;
     volsg::Backend backend = volsg::Backend::OSMesa;
-    bool reference = false;
+    bool reference = false, verbose = false;
     volsg::RayCastOptions rayOptions;
     volsg::StereoOptions stereo;
     stereo.mode = volsg::StereoMode::Off;
@@ -55,6 +58,7 @@ int run(volsg::cli::Arguments& args) {
         .color("--background", options.background)
         .flag("--reference", reference)
         .flag("--interactive", options.interactive)
+        .flag("--verbose", verbose)
         .value("--tolerance",
                [&](const std::string& v) { rayOptions.tolerance = parseTolerance(v); })
         .value("--stereo", [&](const std::string& v) { stereo.mode = volsg::parseStereoMode(v); })
@@ -85,6 +89,9 @@ int run(volsg::cli::Arguments& args) {
     }
     volsg::Renderer renderer;
     volsg::writeImage(output, volsg::renderStereo(renderer, *root, options, stereo));
+    if (verbose)
+        for (const std::string& line : volsg::cli::volumeQualityLines(*root))
+            std::printf("%s\n", line.c_str());
     return 0;
 }
 
