@@ -195,10 +195,21 @@ TEST_CASE("the error model's choice is the cheapest that meets the target") {
     const QualityChoice c = chooseQuality(model, view, request);
     CHECK(c.meetsTarget);
     CHECK(c.predictedRmse <= request.errorTarget);
-    // A cheaper quadrature of the same kind misses the target.
-    SlabQuadrature cheaper = c.quadrature;
-    cheaper.planeSpacingL0 *= 2.0;
-    CHECK(predictImageRmse(model, view, cheaper) > 0.7 * request.errorTarget);
+    // No other quadrature of the search grid that the model predicts within the target (with
+    // the chooser's margin, 0.6) is cheaper.
+    const double cost = quadratureCost(c.quadrature, view.depthL0, VolumeRenderMode::DVR, false);
+    for (const bool pre : {false, true})
+        for (int k = 1; k <= 64; k *= 2)
+            for (int j = -16; j <= 8; ++j) {
+                SlabQuadrature q;
+                q.samplesPerPlane = k;
+                q.planeSpacingL0 = k / std::pow(2.0, 0.5 * j);
+                q.preIntegrated = pre;
+                if (view.depthL0 / q.planeSpacingL0 < 2.0) continue; // fewer planes than allowed
+                if (predictImageRmse(model, view, q) > 0.6 * request.errorTarget) continue;
+                CHECK(quadratureCost(q, view.depthL0, VolumeRenderMode::DVR, false) >=
+                      0.999 * cost);
+            }
     // The prediction falls with the sampling rate.
     SlabQuadrature denser = c.quadrature;
     denser.planeSpacingL0 /= 4.0;

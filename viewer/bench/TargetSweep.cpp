@@ -45,7 +45,7 @@ std::vector<FixedSetting> gridOf(bool quick) {
     const std::vector<int> samples =
         quick ? std::vector<int>{4, 16} : std::vector<int>{1, 4, 16, 64};
     for (const bool method : {false, true})
-        for (int e = 2; e >= -5; --e) { // samples per L0: 4 .. 1/32
+        for (int e = quick ? 1 : 2; e >= -5; --e) { // samples per L0: 4 (quick: 2) .. 1/32
             const double sigma = std::pow(2.0, e);
             for (const int k : samples) {
                 const double p = sigma / k;

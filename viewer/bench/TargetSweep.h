@@ -27,7 +27,8 @@ struct SweepCase {
 
 struct SweepSettings {
     std::vector<double> targets{0.5, 0.25, 2.0}; ///< in 1/255; the first is the default's
-    bool quick = false; ///< a coarser grid of fixed settings (samples per plane 4 and 16 only)
+    /// A coarser grid of fixed settings: samples per plane 4 and 16, at most 2 samples per L0.
+    bool quick = false;
 };
 
 /// A line of the summary: one case at one target.

@@ -19,14 +19,21 @@ bool SlabQuadrature::operator<(const SlabQuadrature& o) const {
 namespace {
 
 constexpr double kStopTransmittance = 1e-7; // as the reference
-constexpr int kMaxFineSteps = 4096;         // per ray: the model's segments
+constexpr int kMaxFineSteps = 8192;         // per ray: the model's segments
 
+/// The model's view directions: a Fibonacci lattice over the half sphere (a ray and its
+/// reverse see the same signal), about 15 degrees apart, none on an axis or a diagonal (views
+/// along them are special cases, where samples line up with the voxel layers).
 glm::dvec3 directionOf(int i) {
-    static const glm::dvec3 d[SlabErrorModel::kDirections] = {
-        {1, 0, 0}, {0, 1, 0},  {0, 0, 1}, {1, 1, 0},  {1, -1, 0}, {1, 0, 1}, {1, 0, -1},
-        {0, 1, 1}, {0, 1, -1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
-    return glm::normalize(d[i]);
+    const double z = (i + 0.5) / SlabErrorModel::kDirections;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = i * 2.399963229728653; // the golden angle
+    return {r * std::cos(phi), r * std::sin(phi), z};
 }
+
+/// Rays of a direction spread over a cone of this half-angle's tangent (about 8 degrees), so
+/// each direction stands for the views around it, not for its exact alignment with the grid.
+constexpr double kConeTangent = 0.14;
 
 /// Trilinear data (and nearest tags) of a grid as the textures hold it: non-finite Float
 /// voxels replaced by the finite extremes.
@@ -92,10 +99,20 @@ struct GridSampler {
     }
 };
 
-/// One ray through the box along a direction: x(t) = origin + t dir, t = depth along dir.
+/// One ray through the box near a direction d: x(t) = origin + t dir (|dir| = 1), with
+/// dot(origin, d) = 0, so the view depth along d is t * depthPerT.
 struct ModelRay {
     glm::dvec3 origin{0.0};
+    glm::dvec3 dir{0.0};
+    double depthPerT = 1.0;
     double t0 = 0.0, t1 = 0.0;
+    /// The layout's planes along this ray (depths become ray lengths).
+    PlaneLayout along(const PlaneLayout& depthLayout) const {
+        PlaneLayout l = depthLayout;
+        l.nearDepth /= depthPerT;
+        l.spacing /= depthPerT;
+        return l;
+    }
 };
 
 struct RaySet {
@@ -154,6 +171,9 @@ struct SlabErrorModel::Impl {
     std::vector<std::unique_ptr<PreIntegrationTable>> preTables; ///< per row, built when needed
     std::unique_ptr<RaySet> sets[kDirections];
     double L0 = 1.0;
+    /// The model's segment length: L0 / 4, finer where the transfer function's narrowest
+    /// feature is crossed in less (its linearised v must not misplace the feature).
+    double truthStep = 0.25;
     VolumeRenderMode mode = VolumeRenderMode::DVR;
 
     int rowAt(const glm::dvec3& p) const {
@@ -203,7 +223,7 @@ struct SlabErrorModel::Impl {
     }
 
     RaySet& raysAlong(int dir);
-    glm::dvec3 truthDvr(const RaySet& s, const ModelRay& ray);
+    glm::dvec3 truthDvr(const ModelRay& ray);
     glm::dvec3 truthExtreme(const ModelRay& ray, const glm::dvec3& dir);
     glm::dvec3 slicedDvr(const ModelRay& ray, const glm::dvec3& dir, const PlaneLayout& layout,
                          const SlabQuadrature& q);
@@ -243,38 +263,45 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
     for (int iy = 0; iy < kRaysAcross; ++iy)
         for (int ix = 0; ix < kRaysAcross; ++ix) {
             const double fx = (ix + jitter()) / kRaysAcross, fy = (iy + jitter()) / kRaysAcross;
-            const glm::dvec3 o = u * (lo.x + fx * (hi.x - lo.x)) + w * (lo.y + fy * (hi.y - lo.y));
+            ModelRay ray;
+            ray.origin = u * (lo.x + fx * (hi.x - lo.x)) + w * (lo.y + fy * (hi.y - lo.y));
+            ray.dir = glm::normalize(
+                d + kConeTangent * ((2.0 * jitter() - 1.0) * u + (2.0 * jitter() - 1.0) * w));
+            ray.depthPerT = glm::dot(ray.dir, d);
+            const glm::dvec3& o = ray.origin;
             double t0 = -1e300, t1 = 1e300;
             for (int a = 0; a < 3; ++a) {
-                if (std::abs(d[a]) < 1e-12) {
+                if (std::abs(ray.dir[a]) < 1e-12) {
                     if (std::abs(o[a]) > half[a]) t1 = -1e300;
                     continue;
                 }
-                double ta = (-half[a] - o[a]) / d[a], tb = (half[a] - o[a]) / d[a];
+                double ta = (-half[a] - o[a]) / ray.dir[a], tb = (half[a] - o[a]) / ray.dir[a];
                 if (ta > tb) std::swap(ta, tb);
                 t0 = std::max(t0, ta);
                 t1 = std::min(t1, tb);
             }
-            if (t1 - t0 > 1e-9 * L0) s->rays.push_back({o, t0, t1});
+            ray.t0 = t0;
+            ray.t1 = t1;
+            if (t1 - t0 > 1e-9 * L0) s->rays.push_back(ray);
         }
     for (const ModelRay& ray : s->rays)
-        s->truth.push_back(mode == VolumeRenderMode::DVR ? truthDvr(*s, ray)
-                                                         : truthExtreme(ray, d));
+        s->truth.push_back(mode == VolumeRenderMode::DVR ? truthDvr(ray)
+                                                         : truthExtreme(ray, ray.dir));
     sets[dirIndex] = std::move(s);
     return *sets[dirIndex];
 }
 
-glm::dvec3 SlabErrorModel::Impl::truthDvr(const RaySet& s, const ModelRay& ray) {
-    // Segments of L0 / 4 (v linear along each: the trilinear field's curvature within a
-    // quarter voxel is what this leaves out), integrated exactly through the segment table.
+glm::dvec3 SlabErrorModel::Impl::truthDvr(const ModelRay& ray) {
+    // Segments of `truthStep` (v linear along each: the trilinear field's curvature within
+    // one is what this leaves out), integrated exactly through the segment table.
     const double len = ray.t1 - ray.t0;
-    const int n = std::clamp(int(std::ceil(len / (0.25 * L0))), 1, kMaxFineSteps);
+    const int n = std::clamp(int(std::ceil(len / truthStep)), 1, kMaxFineSteps);
     const double h = len / n;
     Composite c;
-    glm::dvec3 p = ray.origin + ray.t0 * s.dir;
+    glm::dvec3 p = ray.origin + ray.t0 * ray.dir;
     double dPrev = grid.data(p);
     for (int i = 0; i < n && c.T > kStopTransmittance; ++i) {
-        const glm::dvec3 q = ray.origin + (ray.t0 + (i + 1) * h) * s.dir;
+        const glm::dvec3 q = ray.origin + (ray.t0 + (i + 1) * h) * ray.dir;
         const double dNext = grid.data(q);
         const int row = rowAt(0.5 * (p + q));
         const glm::dvec4 seg = pre(row).segment(vOf(dPrev, row), vOf(dNext, row));
@@ -570,6 +597,7 @@ SlabErrorModel::SlabErrorModel(const RayCastVolume& volume) : impl_(std::make_un
         needs_.gradientPerL0 = gradients[at];
     }
     needs_.samplesPerL0 = 2.0 * needs_.gradientPerL0 / needs_.narrowestFeature;
+    m.truthStep = L0_ / std::clamp(std::ceil(4.0 * needs_.samplesPerL0), 4.0, 32.0);
 }
 
 SlabErrorModel::~SlabErrorModel() = default;
@@ -606,9 +634,10 @@ double SlabErrorModel::rayRmse(int dir, const SlabQuadrature& q) {
     const PlaneLayout layout = PlaneLayout::over(s.depthRange, q.planeSpacingL0 * L0_);
     double sum = 0.0;
     for (std::size_t i = 0; i < s.rays.size(); ++i) {
+        const ModelRay& ray = s.rays[i];
         const glm::dvec3 got = mode_ == VolumeRenderMode::DVR
-                                   ? m.slicedDvr(s.rays[i], s.dir, layout, q)
-                                   : m.slicedExtreme(s.rays[i], s.dir, layout, q);
+                                   ? m.slicedDvr(ray, ray.dir, ray.along(layout), q)
+                                   : m.slicedExtreme(ray, ray.dir, ray.along(layout), q);
         const glm::dvec3 e = got - s.truth[i];
         sum += glm::dot(e, e) / 3.0;
     }
@@ -625,7 +654,7 @@ double SlabErrorModel::preClassifiedRmse(int dir, int sliceStep) {
     const RaySet& s = m.raysAlong(dir);
     double sum = 0.0;
     for (std::size_t i = 0; i < s.rays.size(); ++i) {
-        const glm::dvec3 e = m.preClassified(s.rays[i], s.dir, sliceStep) - s.truth[i];
+        const glm::dvec3 e = m.preClassified(s.rays[i], s.rays[i].dir, sliceStep) - s.truth[i];
         sum += glm::dot(e, e) / 3.0;
     }
     const double rmse = s.rays.empty() ? 0.0 : std::sqrt(sum / double(s.rays.size()));

@@ -9,7 +9,7 @@
 // features composed with the data's variation along the view, on the slab length, opacity
 // correction and the tables' quantisation. Rather than bounding that analytically (bounds on
 // spikes and steps are loose by orders of magnitude), the model evaluates it on a sample of
-// the volume's own rays: parallel rays through the box along one of 13 directions, each
+// the volume's own rays: rays through the box around one of 96 directions, each
 // integrated twice on the CPU, once finely (linear v segments, exact tau and colour integrals:
 // the model) and once with the slicer's arithmetic (its planes, slabs, parts, opacity
 // correction, its 4096-entry transfer table and 256 x 256 pre-integration table, tag cells,
@@ -54,7 +54,7 @@ struct SignalNeeds {
 
 class SlabErrorModel {
 public:
-    static constexpr int kDirections = 13;
+    static constexpr int kDirections = 96;
     static constexpr int kRaysAcross = 12; ///< rays per direction: up to kRaysAcross^2
 
     /// Takes what the model needs of a volume: its data, tags, transfer functions and mode.
@@ -68,7 +68,8 @@ public:
     /// Whether tagged transfer functions apply (the slicer's general, tag-cell path).
     bool tagged() const { return tagged_; }
 
-    /// The direction (of 13: axes, face and body diagonals) nearest to a local view direction.
+    /// The direction (of kDirections over the half sphere, about 15 degrees apart) nearest to
+    /// a local view direction, either way along it.
     static int nearestDirection(const glm::dvec3& localDirection);
     /// The RMSE per channel (0..1 units) over the rays through the box along direction `dir`
     /// (nearestDirection) drawn with quadrature `q`, against the model. Cached.

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include <volsg/core/Error.h>
+#include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
 #include <volsg/slicing/SliceDraw.h>
 #include <volsg/slicing/SliceGeometry.h>
@@ -96,6 +97,14 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
         frame.interactive ? settings.interactiveErrorTarget : settings.errorTarget;
     if (!(target > 0.0) || volume.mode == VolumeRenderMode::AVERAGE || settings.nearest)
         return settings;
+    // What the model leaves out (BoxClip, clip planes, planeOpacity, opaque geometry ending
+    // rays) adds boundaries inside slabs and silhouettes it does not sample: the model is
+    // asked for half the target there (README, "Error targets": what this does and does not
+    // cover).
+    const bool outsideModel = volume.boxClip || !volume.clipPlanes.empty() ||
+                              planeOpacityMatters(volume.planeOpacity) ||
+                              frame.shapes.drawsLastFrame() > 0;
+    const double modelTarget = outsideModel ? 0.5 * target : target;
     const auto started = std::chrono::steady_clock::now();
     if (!v.errorModel || v.errorModelKey != volume.transferKey ||
         v.errorModelMode != int(volume.mode)) {
@@ -104,7 +113,7 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
         v.errorModelMode = int(volume.mode);
     }
     QualityRequest request;
-    request.errorTarget = target;
+    request.errorTarget = modelTarget;
     if (frame.interactive && settings.interactivePlanes > 0)
         request.numPlanes = settings.interactivePlanes;
     else if (settings.numPlanes > 0)
