@@ -31,9 +31,18 @@ glm::dvec3 directionOf(int i) {
     return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
-/// Rays of a direction spread over a cone of this half-angle's tangent (about 8 degrees), so
-/// each direction stands for the views around it, not for its exact alignment with the grid.
+/// Rays of a direction spread over a square of tangents (about 8 degrees), so each direction
+/// stands for the views around it, not for its exact alignment with the grid; the wide sets
+/// (direction index + kDirections) spread as a perspective view's pixels do (about 25 degrees),
+/// which changes how slabs meet the rays near the box's faces.
 constexpr double kConeTangent = 0.14;
+constexpr double kWideConeTangent = 0.45;
+/// Rays per direction: between kMinRaysAcross^2 and kMaxRaysAcross^2, as many as keep the
+/// model's segments along them under kSampleBudget (its cost per direction: about 100 ms at
+/// the budget on llvmpipe's machine).
+constexpr int kMinRaysAcross = 12;
+constexpr int kMaxRaysAcross = 32;
+constexpr double kSampleBudget = 1.0e6;
 
 /// Trilinear data (and nearest tags) of a grid as the textures hold it: non-finite Float
 /// voxels replaced by the finite extremes.
@@ -169,7 +178,7 @@ struct SlabErrorModel::Impl {
     TransferTable table;
     bool tagged = false;
     std::vector<std::unique_ptr<PreIntegrationTable>> preTables; ///< per row, built when needed
-    std::unique_ptr<RaySet> sets[kDirections];
+    std::unique_ptr<RaySet> sets[2 * kDirections];               ///< narrow, then wide
     double L0 = 1.0;
     /// The model's segment length: L0 / 4, finer where the transfer function's narrowest
     /// feature is crossed in less (its linearised v must not misplace the feature).
@@ -237,7 +246,8 @@ struct SlabErrorModel::Impl {
 RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
     if (sets[dirIndex]) return *sets[dirIndex];
     auto s = std::make_unique<RaySet>();
-    const glm::dvec3 d = directionOf(dirIndex);
+    const glm::dvec3 d = directionOf(dirIndex % kDirections);
+    const double cone = dirIndex >= kDirections ? kWideConeTangent : kConeTangent;
     s->dir = d;
     const glm::dvec3 half = grid.half;
     const double depth = std::abs(d.x) * half.x + std::abs(d.y) * half.y + std::abs(d.z) * half.z;
@@ -260,13 +270,18 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
         hash ^= hash << 5;
         return double(hash) / 4294967296.0;
     };
-    for (int iy = 0; iy < kRaysAcross; ++iy)
-        for (int ix = 0; ix < kRaysAcross; ++ix) {
-            const double fx = (ix + jitter()) / kRaysAcross, fy = (iy + jitter()) / kRaysAcross;
+    // As many rays as a budget of model samples allows: errors often sit on a few pixels (a
+    // thin feature's rim, a silhouette), which a dozen rays across can miss or over-weigh.
+    const double samplesPerRay = 2.0 * depth / truthStep;
+    const int across = std::clamp(int(std::sqrt(kSampleBudget / std::max(samplesPerRay, 1.0))),
+                                  kMinRaysAcross, kMaxRaysAcross);
+    for (int iy = 0; iy < across; ++iy)
+        for (int ix = 0; ix < across; ++ix) {
+            const double fx = (ix + jitter()) / across, fy = (iy + jitter()) / across;
             ModelRay ray;
             ray.origin = u * (lo.x + fx * (hi.x - lo.x)) + w * (lo.y + fy * (hi.y - lo.y));
             ray.dir = glm::normalize(
-                d + kConeTangent * ((2.0 * jitter() - 1.0) * u + (2.0 * jitter() - 1.0) * w));
+                d + cone * ((2.0 * jitter() - 1.0) * u + (2.0 * jitter() - 1.0) * w));
             ray.depthPerT = glm::dot(ray.dir, d);
             const glm::dvec3& o = ray.origin;
             double t0 = -1e300, t1 = 1e300;
@@ -602,7 +617,7 @@ SlabErrorModel::SlabErrorModel(const RayCastVolume& volume) : impl_(std::make_un
 
 SlabErrorModel::~SlabErrorModel() = default;
 
-int SlabErrorModel::nearestDirection(const glm::dvec3& localDirection) {
+int SlabErrorModel::nearestDirection(const glm::dvec3& localDirection, bool wide) {
     const glm::dvec3 d = glm::normalize(localDirection);
     int best = 0;
     double bestDot = -1.0;
@@ -613,7 +628,7 @@ int SlabErrorModel::nearestDirection(const glm::dvec3& localDirection) {
             best = i;
         }
     }
-    return best;
+    return wide ? best + kDirections : best;
 }
 
 bool SlabErrorModel::hasDirection(int dir) const {
@@ -621,7 +636,7 @@ bool SlabErrorModel::hasDirection(int dir) const {
 }
 
 double SlabErrorModel::depthL0(int dir) const {
-    const glm::dvec3 d = directionOf(dir);
+    const glm::dvec3 d = directionOf(dir % kDirections);
     const glm::dvec3 h = impl_->grid.half;
     return 2.0 * (std::abs(d.x) * h.x + std::abs(d.y) * h.y + std::abs(d.z) * h.z) / L0_;
 }

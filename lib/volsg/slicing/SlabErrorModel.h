@@ -55,7 +55,6 @@ struct SignalNeeds {
 class SlabErrorModel {
 public:
     static constexpr int kDirections = 96;
-    static constexpr int kRaysAcross = 12; ///< rays per direction: up to kRaysAcross^2
 
     /// Takes what the model needs of a volume: its data, tags, transfer functions and mode.
     /// Cheap (tables and a sample of voxels); rays are cast per direction when first asked.
@@ -69,8 +68,9 @@ public:
     bool tagged() const { return tagged_; }
 
     /// The direction (of kDirections over the half sphere, about 15 degrees apart) nearest to
-    /// a local view direction, either way along it.
-    static int nearestDirection(const glm::dvec3& localDirection);
+    /// a local view direction, either way along it; `wide`: its ray set spread as a
+    /// perspective view's rays (index + kDirections).
+    static int nearestDirection(const glm::dvec3& localDirection, bool wide = false);
     /// The RMSE per channel (0..1 units) over the rays through the box along direction `dir`
     /// (nearestDirection) drawn with quadrature `q`, against the model. Cached.
     double rayRmse(int dir, const SlabQuadrature& q);

@@ -26,6 +26,7 @@ struct QualityView {
     double depthL0 = 1.0;     ///< the box's extent along the view axis, in L0 (local units)
     double coverage = 1.0;    ///< share of the image's pixels whose rays cross the box
     double slabStretch = 1.0; ///< mean ray length per unit of view depth (perspective: > 1)
+    double coneTangent = 0.0; ///< tangent of the widest angle of a ray on the box to the axis
 };
 
 /// The view of a volume box [-halfExtent, halfExtent] under `modelView` (local to eye) and
