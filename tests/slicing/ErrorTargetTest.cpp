@@ -4,6 +4,7 @@
 #include "SlicingTestSupport.h"
 
 #include <volsg/io/SceneReader.h>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/slicing/SlabErrorModel.h>
 #include <volsg/slicing/SlicingQuality.h>
@@ -214,4 +215,51 @@ TEST_CASE("the error model's choice is the cheapest that meets the target") {
     SlabQuadrature denser = c.quadrature;
     denser.planeSpacingL0 /= 4.0;
     CHECK(predictImageRmse(model, view, denser) < c.predictedRmse);
+}
+
+TEST_CASE_FIXTURE(GlFixture, "ShearWarpVolume predicts its error and picks the interactive step") {
+    const std::string scene = R"(#Inventor V2.1 ascii
+Separator {
+  OrthographicCamera { position 0 1.2 4 orientation 1 0 0 -0.2914567944778671 height 3.4843
+                       nearDistance 2 farDistance 6.5 focalDistance 4.18 }
+  VolumeData { generator MARSCHNER_LOBB dimensions 32 32 32 }
+  DEF SW ShearWarpVolume {
+    TransferFunction { red [ 0 0.1, 1 1 ] green [ 0 0.3, 1 0.9 ] blue [ 0 1, 1 0.1 ]
+                       alpha [ 0 0, 1 0.12 ] }
+    VolumeObject { }
+  }
+}
+)";
+    ref_ptr<Node> root = readSceneFromString(scene, "sw.iv");
+    auto* sw = static_cast<ShearWarpVolume*>(root->children()->back().get());
+    REQUIRE(sw->isA<ShearWarpVolume>());
+    RenderOptions options;
+    options.width = options.height = 64;
+    const Image reference = renderReference(*root, options);
+    const Image still = renderer.render(*root, options);
+    const ShearWarpVolume::Quality floor = sw->lastQuality();
+    const double measured = difference(still, reference).rmse;
+    MESSAGE("still: predicted " << floor.predictedRmse / k8Bit << "/255, measured "
+                                << measured / k8Bit << "/255");
+    REQUIRE(floor.predicted);
+    CHECK(floor.sliceStep == 1);
+    CHECK(floor.predictedRmse == doctest::Approx(floor.floorRmse));
+    CHECK(floor.predictedRmse < kPredictionFactor * measured);
+    CHECK(floor.predictedRmse > measured / kPredictionFactor);
+    // Interactive: the largest step predicted within interactiveErrorTarget.
+    for (const float target : {2.0f, 8.0f}) {
+        sw->interactiveErrorTarget = target;
+        options.interactive = true;
+        const Image moving = renderer.render(*root, options);
+        const ShearWarpVolume::Quality q = sw->lastQuality();
+        MESSAGE("interactive target " << target << "/255: step " << q.sliceStep << ", predicted "
+                                      << q.predictedRmse / k8Bit << "/255, measured "
+                                      << difference(moving, reference).rmse / k8Bit << "/255");
+        CHECK(q.predictedRmse <= target * k8Bit + 1e-12);
+        if (target == 8.0f) CHECK(q.sliceStep > 1);
+    }
+    // Set in the scene, the step is kept.
+    sw->interactiveSliceStep = 3;
+    renderer.render(*root, options);
+    CHECK(sw->lastQuality().sliceStep == 3);
 }
