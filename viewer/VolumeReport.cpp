@@ -26,9 +26,10 @@ std::string describe(const Volume& v) {
     if (s.predictedRmse >= 0.0) {
         std::snprintf(line, sizeof line,
                       ", predicted RMSE %.3g/255 (target %.3g/255%s), %.0f%% of "
-                      "the image covered",
+                      "the image covered, choice %.1f ms",
                       s.predictedRmse * 255.0, s.errorTarget * 255.0,
-                      s.meetsTarget ? "" : ", not met", s.coverage * 100.0);
+                      s.meetsTarget ? "" : ", not met", s.coverage * 100.0,
+                      s.qualityMilliseconds);
         out += line;
     } else {
         out += ", no prediction (no target, AVERAGE or NEAREST)";

@@ -168,13 +168,10 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
     leastError.predictedRmse = std::numeric_limits<double>::infinity();
     const double wanted = request.errorTarget * kTargetMargin;
     const bool single = request.numPlanes && request.samplesPerPlane;
-    // Start where the signal's needs say the error is still large: a sixty-fourth of the rate
-    // that gives the narrowest feature two samples.
-    const double needs = model.needs().samplesPerL0;
-    int lowest = kLowestStep;
-    if (needs > 0.0)
-        lowest =
-            std::clamp(int(std::floor(2.0 * std::log2(needs / 64.0))), kLowestStep, kHighestStep);
+    // The walk starts at the lowest rate: the signal's needs (SignalNeeds) would skip cheap
+    // rates, but a step in the transfer function has a narrowest feature of one table entry
+    // and still meets loose targets at low rates (pre-integrated).
+    const int lowest = kLowestStep;
     for (const bool kind : kinds) {
         const bool pre = !extreme && kind, peaks = extreme && kind;
         int start = lowest; // the rate that met the target with the previous sample count
