@@ -57,6 +57,7 @@ const char* usage =
     "                   [--csv FILE] [--plot FILE.svg]\n"
     "       volsg-bench --suite node --export-views DIR [--size WxH] [--frames N] ...\n"
     "       volsg-bench --suite volumes|node --sweep [--targets T,T,...] [--sweep-quick]\n"
+    "                   [--before-after]\n"
     "                   [--large] [--cases NAME,...] [--reference-dir DIR] [--csv FILE]\n"
     "       every form also takes the debug switches [--no-empty-cells]\n"
     "                   [--no-texture-staging] [--max-3d-texture N] [--scalar-kernels]\n"
@@ -83,7 +84,8 @@ const char* usage =
     "                  (--suite volumes: the sweep's own cases, 4 views, 2 compared; --large\n"
     "                  adds 128^3 and the 256^3 at 512x512; --suite node: its cases, DVR and\n"
     "                  MIP). --targets in 1/255 (default 0.5,0.25,2; the first is the\n"
-    "                  default's), --sweep-quick: a coarser grid\n"
+    "                  default's), --sweep-quick: a coarser grid, --before-after: no grid,\n"
+    "                  the old fixed rule (errorTarget 0) and the defaults only\n"
     "  --export-views  write the cameras, volumes and transfer functions of the node suite\n"
     "                  for viewer/vtk/vtk_volume_bench.py into DIR, and stop\n"
     "  --compare DIR   add VTK's rows (DIR/vtk-results.tsv and its PFM frames, written by\n"
@@ -120,7 +122,7 @@ struct Settings {
     bool mipPeaks = true;
     std::string scenesDir = VOLSG_BENCH_SCENES_DIR;
     std::string referenceDir, exportDir, compareDir, rowsCsv;
-    bool sweep = false, sweepQuick = false, large = false;
+    bool sweep = false, sweepQuick = false, large = false, beforeAfter = false;
     std::vector<double> targets;
     RenderOptions options;
     bool sizeGiven = false;
@@ -356,6 +358,7 @@ int sweepSuite(const Settings& st) {
     bench::SweepSettings sw;
     if (!st.targets.empty()) sw.targets = st.targets;
     sw.quick = st.sweepQuick;
+    sw.beforeAfter = st.beforeAfter;
     std::vector<bench::BenchRow> rows;
     std::vector<bench::SweepLine> lines;
     std::vector<bench::ValidationLine> validation;
@@ -425,6 +428,7 @@ int run(cli::Arguments& args) {
         .text("--reference-dir", st.referenceDir)
         .flag("--sweep", st.sweep)
         .flag("--sweep-quick", st.sweepQuick)
+        .flag("--before-after", st.beforeAfter)
         .flag("--large", st.large)
         .value("--targets",
                [&](const std::string& v) {

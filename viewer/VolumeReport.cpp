@@ -28,8 +28,7 @@ std::string describe(const Volume& v) {
                       ", predicted RMSE %.3g/255 (target %.3g/255%s), %.0f%% of "
                       "the image covered, choice %.1f ms",
                       s.predictedRmse * 255.0, s.errorTarget * 255.0,
-                      s.meetsTarget ? "" : ", not met", s.coverage * 100.0,
-                      s.qualityMilliseconds);
+                      s.meetsTarget ? "" : ", not met", s.coverage * 100.0, s.qualityMilliseconds);
         out += line;
     } else {
         out += ", no prediction (no target, AVERAGE or NEAREST)";

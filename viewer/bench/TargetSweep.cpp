@@ -171,7 +171,23 @@ std::vector<BenchRow> runTargetSweep(SweepCase& c, const SweepSettings& st,
         Measured m;
     };
     std::vector<FixedRow> fixedRows;
-    for (const FixedSetting& f : gridOf(st.quick)) {
+    if (st.beforeAfter) {
+        // The fixed rule the node had before error targets: errorTarget 0.
+        setAutomatic(*c.volume, 0.0);
+        const Measured before = measure(c);
+        BenchRow row = rowOf(c, "before: errorTarget 0 (2 samples per voxel): " + before.chosen,
+                             before, "before");
+        printRow(row);
+        rows.push_back(row);
+        SweepLine line;
+        line.scene = c.name;
+        line.target = 0.0;
+        line.defaultSetting = "before (fixed rule): " + before.chosen;
+        line.defaultMs = before.ms;
+        line.defaultRmse = before.rmse;
+        lines.push_back(line);
+    }
+    for (const FixedSetting& f : st.beforeAfter ? std::vector<FixedSetting>{} : gridOf(st.quick)) {
         setFixed(*c.volume, f, depthL0, st.targets.front());
         Measured m;
         try {
@@ -225,6 +241,11 @@ void printSweepTables(const std::vector<SweepLine>& lines,
                 "| ms | RMSE | default/best ms | meets |\n");
     std::printf("| --- | ---: | --- | ---: | ---: | ---: | --- | ---: | ---: | ---: | --- |\n");
     for (const SweepLine& l : lines) {
+        if (l.target <= 0.0) { // the fixed rule before error targets
+            std::printf("| %s | (none) | %s | %.1f | %.3g | | | | | | |\n", l.scene.c_str(),
+                        l.defaultSetting.c_str(), l.defaultMs, l.defaultRmse);
+            continue;
+        }
         const bool meets = l.defaultRmse <= l.target;
         std::printf("| %s | %g | %s | %.1f | %.3g | %.3g | %s | %s | %s | %s | %s |\n",
                     l.scene.c_str(), l.target, l.defaultSetting.c_str(), l.defaultMs, l.defaultRmse,

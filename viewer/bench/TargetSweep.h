@@ -29,6 +29,9 @@ struct SweepSettings {
     std::vector<double> targets{0.5, 0.25, 2.0}; ///< in 1/255; the first is the default's
     /// A coarser grid of fixed settings: samples per plane 4 and 16, at most 2 samples per L0.
     bool quick = false;
+    /// Only the old fixed rule (errorTarget 0: 2 samples per voxel, one per plane) and the
+    /// defaults at the targets, no grid: the before and after of the defaults.
+    bool beforeAfter = false;
 };
 
 /// A line of the summary: one case at one target.
