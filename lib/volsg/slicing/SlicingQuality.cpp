@@ -135,6 +135,11 @@ double predictImageRmse(SlabErrorModel& model, const QualityView& view, const Sl
     const bool wide = view.coneTangent > 0.2;
     SlabQuadrature stretched = q;
     if (!wide) stretched.planeSpacingL0 = roundedSpacing(q.planeSpacingL0 * view.slabStretch);
+    // Denser than the search's top rate (numPlanes 100000, samplesPerPlane 256): predicted at
+    // that rate, an upper bound, so the model's work stays bounded.
+    const double topRate = std::pow(2.0, 0.5 * kHighestStep);
+    if (stretched.samplesPerL0() > topRate)
+        stretched.planeSpacingL0 = roundedSpacing(stretched.samplesPerPlane / topRate);
     const int dir = SlabErrorModel::nearestDirection(view.localDirection, wide);
     return std::sqrt(std::clamp(view.coverage, 0.0, 1.0)) * model.rayRmse(dir, stretched);
 }
