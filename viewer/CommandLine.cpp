@@ -8,6 +8,7 @@
 #include <exception>
 
 #include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 
 namespace volsg::cli {
 
@@ -124,6 +125,70 @@ Options::Operand sceneOperand(std::string& scene) {
 int usageError(const char* usage) {
     std::fputs(usage, stderr);
     return 2;
+}
+
+namespace {
+
+VoxelType parseVoxelType(const std::string& text) {
+    std::string t;
+    for (const char c : text)
+        t += char(std::tolower(static_cast<unsigned char>(c)));
+    if (t == "uchar" || t == "ubyte" || t == "uint8") return VoxelType::UByte;
+    if (t == "ushort" || t == "uint16") return VoxelType::UShort;
+    if (t == "short" || t == "int16") return VoxelType::Short;
+    if (t == "float" || t == "float32") return VoxelType::Float;
+    throw Error("--type expects uchar, ushort, short or float, not '" + text + "'");
+}
+
+double parseNumberWord(const std::string& text, std::string_view option) {
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(v))
+        throw Error("option " + std::string(option) + " expects numbers, not '" + text + "'");
+    return v;
+}
+
+} // namespace
+
+std::string withRawUsage(const char* usage) {
+    std::string text = usage;
+    const std::size_t at = text.find("%s");
+    if (at != std::string::npos)
+        text.replace(at, 2,
+                     "  raw voxels: --dims X Y Z --type uchar|ushort|short|float\n"
+                     "              [--spacing SX SY SZ] [--big-endian] [--header-skip BYTES]\n"
+                     "              (plain or gzip files)\n");
+    return text;
+}
+
+Options& Options::rawVolume(OpenFileOptions& open) {
+    const auto layout = [&open]() -> RawVolumeLayout& {
+        if (!open.raw) open.raw = RawVolumeLayout{};
+        return *open.raw;
+    };
+    add("--dims", [layout](Arguments& args, const std::string& option) {
+        glm::ivec3& d = layout().dimensions;
+        for (int a = 0; a < 3; ++a)
+            d[a] = args.intValue(option, 1, limits::maxVolumeDimension);
+    });
+    value("--type", [layout](const std::string& v) { layout().type = parseVoxelType(v); });
+    add("--spacing", [layout](Arguments& args, const std::string& option) {
+        glm::dvec3& s = layout().spacing;
+        for (int a = 0; a < 3; ++a) {
+            s[a] = parseNumberWord(args.value(option), option);
+            if (!(s[a] > 0.0)) throw Error("option --spacing expects numbers > 0");
+        }
+    });
+    add("--big-endian", [layout](Arguments&, const std::string&) { layout().bigEndian = true; });
+    add("--header-skip", [layout](Arguments& args, const std::string& option) {
+        layout().headerSkip = std::uint64_t(args.intValue(option, 0, 1 << 30));
+    });
+    return *this;
+}
+
+void checkRawLayout(const OpenFileOptions& open) {
+    if (open.raw && open.raw->dimensions == glm::ivec3(0))
+        throw Error("raw volume options need --dims X Y Z");
 }
 
 glm::ivec2 parseSize(const std::string& text) {

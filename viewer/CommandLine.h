@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 
+#include <volsg/volumescene/SceneForFile.h>
+
 namespace volsg::cli {
 
 /// The arguments after the program name, consumed front to back.
@@ -63,6 +65,11 @@ public:
     Options& color(const Names& names, glm::vec3& target);
     /// `name F`, a number in (0, 1] (parseFraction).
     Options& fraction(const Names& names, double& target);
+    /// The layout of a raw volume given as the scene: `--dims X Y Z`, `--type
+    /// uchar|ushort|short|float` (also UBYTE, USHORT, SHORT, FLOAT, uint8, uint16, int16,
+    /// float32), `--spacing SX SY SZ`, `--big-endian`, `--header-skip N`. Any of them makes
+    /// `open.raw` set; --dims is then required (checkRawLayout).
+    Options& rawVolume(OpenFileOptions& open);
 
     /// Reads the command line front to back: -h or --help prints `usage` on stdout and returns
     /// false (the tool exits with 0); an option does its action; any other word goes to
@@ -85,5 +92,10 @@ glm::vec3 parseColor(const std::string& text); ///< "R,G,B" in [0,1]
 /// A number in (0, 1] for `option` (the stereo eye separation as a fraction of focalDistance).
 double parseFraction(const std::string& text, std::string_view option);
 std::string extensionOf(const std::string& path); ///< lower case, with the dot
+
+/// A tool's usage text whose "%s" is replaced by the options text of rawVolume().
+std::string withRawUsage(const char* usage);
+/// After reading the command line: a raw layout without --dims is an error.
+void checkRawLayout(const OpenFileOptions& open);
 
 } // namespace volsg::cli

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "CommandLine.h"
+#include "TerminalProgress.h"
 #include <volsg/io/AtomicFile.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/voxelfile/VoxelFile.h>
@@ -27,9 +28,14 @@ int run(volsg::cli::Arguments& args) {
     table.text({"-o", "--output"}, output).text("--scene", companion);
     if (!table.read(args, usage, volsg::cli::sceneOperand(scene))) return 0;
     if (scene.empty() || output.empty()) return volsg::cli::usageError(usage);
+    volsg::cli::TerminalProgress progress("volsg-pack");
+    progress.stage(0.0, "reading " + scene);
     volsg::ref_ptr<volsg::Node> root = volsg::readScene(scene);
+    progress.stage(0.2, "extracting the objects");
     const volsg::VoxelFileContent content = volsg::packScene(*root);
+    progress.stage(0.8, "writing " + output);
     volsg::writeVoxelFile(output, content);
+    progress.finish();
     std::size_t voxels = 0;
     for (const volsg::PackedObject& o : content.objects)
         voxels += o.voxels->voxelCount();

@@ -1,24 +1,30 @@
-// volsg-render: renders a scene file headless to PNG or PFM, or writes it back as a scene file.
+// volsg-render: renders a scene file (or any data file volsg opens, in the scene built for it)
+// headless to PNG or PFM, or writes it back as a scene file.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
 #include "CommandLine.h"
+#include "TerminalProgress.h"
 #include "VolumeReport.h"
 #include <volsg/context/Context.h>
 #include <volsg/core/Error.h>
+#include <volsg/engines/Evaluator.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/io/SceneWriter.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/render/StereoRenderer.h>
 #include <volsg/volumescene/ReferenceScene.h>
-#include <volsg/voxelfile/VoxelFileScene.h>
+#include <volsg/volumescene/SceneForFile.h>
 
 namespace {
 
 const char* usage =
-    "usage: volsg-render SCENE -o OUT.png|OUT.pfm|OUT.iv [--size WxH] [--backend osmesa|egl]\n"
-    "  (SCENE: a scene file or a .vsgv voxel-list file written by volsg-pack)\n"
+    "usage: volsg-render FILE -o OUT.png|OUT.pfm|OUT.iv [--size WxH] [--backend osmesa|egl]\n"
+    "  (FILE: a scene file, a .vsgv voxel-list file written by volsg-pack, a volume\n"
+    "   (.nrrd .nhdr .mhd .mha .nii .nii.gz, a DICOM folder or file, raw with the options\n"
+    "   below) or a glTF model (.gltf .glb), shown in the scene built for it; -o OUT.iv\n"
+    "   writes that scene)\n"
     "                    [--background R,G,B] [--reference [--tolerance T]]\n"
     "                    [--stereo anaglyph|side-by-side [--eye-separation F]]\n"
     "                    [--interactive] [--verbose]\n"
@@ -29,11 +35,22 @@ const char* usage =
     "                the two eyes side by side (left eye left, each half the width), zero\n"
     "                parallax at the camera's focalDistance\n"
     "  --eye-separation  the eye separation as a fraction of focalDistance (default 1/30)\n"
+    "  --time T      the scene time in seconds for engines, connections and animated nodes\n"
+    "                (default 0: what the scene shows when it starts)\n"
     "  --interactive the frame the viewer draws while the user drags: volumes use their\n"
     "                interactive settings (Volume.interactivePlanes,\n"
     "                ShearWarpVolume.interactiveSliceStep)\n"
     "  --verbose     print per volume node the settings it drew with and the error it predicts\n"
-    "                against the rendering model (Volume.errorTarget)\n";
+    "                against the rendering model (Volume.errorTarget)\n"
+    "%s";
+
+double parseTime(const std::string& text) {
+    char* end = nullptr;
+    const double t = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(t >= 0.0) || !(t <= 1e9))
+        throw volsg::Error("--time wants seconds between 0 and 1e9, got '" + text + "'");
+    return t;
+}
 
 double parseTolerance(const std::string& text) {
     char* end = nullptr;
@@ -50,7 +67,9 @@ int run(volsg::cli::Arguments& args) {
     bool reference = false, verbose = false;
     volsg::RayCastOptions rayOptions;
     volsg::StereoOptions stereo;
+    volsg::OpenFileOptions open;
     stereo.mode = volsg::StereoMode::Off;
+    double time = 0.0;
     volsg::cli::Options table;
     table.text({"-o", "--output"}, output)
         .size("--size", options.width, options.height)
@@ -61,26 +80,40 @@ int run(volsg::cli::Arguments& args) {
         .flag("--verbose", verbose)
         .value("--tolerance",
                [&](const std::string& v) { rayOptions.tolerance = parseTolerance(v); })
+        .value("--time", [&](const std::string& v) { time = parseTime(v); })
         .value("--stereo", [&](const std::string& v) { stereo.mode = volsg::parseStereoMode(v); })
-        .fraction("--eye-separation", stereo.separationFraction);
-    if (!table.read(args, usage, volsg::cli::sceneOperand(scene))) return 0;
-    if (scene.empty() || output.empty()) return volsg::cli::usageError(usage);
+        .fraction("--eye-separation", stereo.separationFraction)
+        .rawVolume(open);
+    const std::string help = volsg::cli::withRawUsage(usage);
+    if (!table.read(args, help.c_str(), volsg::cli::sceneOperand(scene))) return 0;
+    if (scene.empty() || output.empty()) return volsg::cli::usageError(help.c_str());
+    volsg::cli::checkRawLayout(open);
     const std::string ext = volsg::cli::extensionOf(output);
     if (ext != ".png" && ext != ".pfm" && ext != ".iv")
         throw volsg::Error("output '" + output + "' must end in .png, .pfm or .iv");
 
-    // A .vsgv (volsg-pack) opens as its stored scene.
-    volsg::ref_ptr<volsg::Node> root = volsg::readSceneOrVoxelFile(scene);
+    // Stages of a run on a terminal: reading (a large volume takes seconds), then rendering.
+    volsg::cli::TerminalProgress progress("volsg-render");
+    progress.stage(0.0, "reading " + scene);
+    // A .vsgv (volsg-pack) opens as its stored scene, a data file in the scene built for it.
+    volsg::ref_ptr<volsg::Node> root = volsg::readSceneForFile(scene, open);
     if (ext == ".iv") {
         volsg::writeSceneToFile(output, *root);
         return 0;
     }
+    // Connected fields take their sources' values, and engines and animated nodes run, at the
+    // scene time asked for (Coin evaluates them when a field is read; the picture is the same).
+    volsg::evaluateConnections(*root, time);
+    progress.stage(0.4, reference ? "rendering the reference" : "rendering");
     auto context = volsg::Context::createOffscreen(backend);
     if (reference && stereo.mode != volsg::StereoMode::Off)
         throw volsg::Error("--reference and --stereo cannot be combined");
     if (reference) {
         volsg::RayCastResult details;
-        volsg::writeImage(output, volsg::renderReference(*root, options, &details, rayOptions));
+        const volsg::Image image = volsg::renderReference(*root, options, &details, rayOptions);
+        progress.stage(0.95, "writing " + output);
+        volsg::writeImage(output, image);
+        progress.finish();
         std::printf("reference: error bound %.3g (tolerance %.3g, %s, at most %d halvings)\n",
                     details.errorBound, rayOptions.tolerance,
                     details.converged ? "converged" : "NOT converged everywhere",
@@ -88,7 +121,9 @@ int run(volsg::cli::Arguments& args) {
         return 0;
     }
     volsg::Renderer renderer;
-    volsg::writeImage(output, volsg::renderStereo(renderer, *root, options, stereo));
+    const volsg::Image image = volsg::renderStereo(renderer, *root, options, stereo);
+    progress.stage(0.95, "writing " + output);
+    volsg::writeImage(output, image);
     if (verbose)
         for (const std::string& line : volsg::cli::volumeQualityLines(*root))
             std::printf("%s\n", line.c_str());

@@ -11,7 +11,7 @@
 namespace {
 
 const char* usage =
-    "usage: volsg-view SCENE [--script FILE] [--size WxH] [--background R,G,B]\n"
+    "usage: volsg-view FILE [--script FILE] [--size WxH] [--background R,G,B]\n"
     "                  [--antialias [msaa|2x2|off]]\n"
     "                  [--no-panels] [--layout single|four] [--navigation examiner|fly|walk]\n"
     "                  [--stereo off|anaglyph|side-by-side] [--eye-separation F]\n"
@@ -31,7 +31,11 @@ const char* usage =
     "  walk:  hold left: up/down walks, left/right turns; middle drag looks up/down\n"
     "  four views: click a section view to move the cursor (and the planes) there, wheel\n"
     "         steps its plane\n"
-    "  The scene reloads when its file changes.\n";
+    "  The scene reloads when its file changes.\n"
+    "  FILE: a scene file, a .vsgv, a volume (.nrrd .nhdr .mhd .mha .nii .nii.gz, a DICOM\n"
+    "  folder or file, raw with the options below) or a glTF model (.gltf .glb): a data file\n"
+    "  opens in the scene built for it, which ctrl+s saves as an .iv beside it.\n"
+    "%s";
 
 int run(volsg::cli::Arguments& args) {
     volsg::ViewerOptions options;
@@ -66,9 +70,12 @@ int run(volsg::cli::Arguments& args) {
                [&](const std::string& v) { options.navigation = volsg::parseNavigationMode(v); })
         .value("--stereo",
                [&](const std::string& v) { options.stereo.mode = volsg::parseStereoMode(v); })
-        .fraction("--eye-separation", options.stereo.separationFraction);
-    if (!table.read(args, usage, volsg::cli::sceneOperand(options.scenePath))) return 0;
-    if (options.scenePath.empty()) return volsg::cli::usageError(usage);
+        .fraction("--eye-separation", options.stereo.separationFraction)
+        .rawVolume(options.open);
+    const std::string help = volsg::cli::withRawUsage(usage);
+    if (!table.read(args, help.c_str(), volsg::cli::sceneOperand(options.scenePath))) return 0;
+    if (options.scenePath.empty()) return volsg::cli::usageError(help.c_str());
+    volsg::cli::checkRawLayout(options.open);
     volsg::Viewer viewer(options);
     return viewer.run();
 }

@@ -8,6 +8,9 @@ find_package(ZLIB REQUIRED)
 # glTF loading: Debian's tinygltf is a shared library (target TinyGLTF::TinyGLTF), so no
 # TINYGLTF_IMPLEMENTATION anywhere.
 find_package(TinyGLTF REQUIRED)
+# DICOM series: GDCM parses the data sets and decodes every transfer syntax (JPEG, JPEG-LS,
+# JPEG 2000, RLE), which a hand-written reader could not match (lib/volsg/volumeio).
+find_package(GDCM REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 # Texture image files: libsimage is the loader Coin itself uses, so a Texture2 reads exactly
 # the formats an Inventor file may name (SGI .rgb, PNG, JPEG, GIF, TIFF).

@@ -103,15 +103,16 @@ TEST_CASE("a freehand stroke in the editor turns into a few control points") {
     CHECK(history.size() == 1);
 }
 
-TEST_CASE("presets set all four channels in one step") {
+TEST_CASE("a generic preset applied to both sets all four channels in one step") {
     EditHistory history;
     TransferFunctionEditor editor(history);
     ref_ptr<Node> root = readSceneFromString(labelledScene);
     editor.setScene(root.get());
-    editor.applyPreset(TransferFunctionEditor::HotMetal);
+    const TransferFunctionPreset& hot = transferFunctionPresets()[1];
+    REQUIRE(hot.name == "hot metal");
+    editor.applyPreset(hot, PresetApply::Both);
     TransferFunction& tf = *editor.selected();
-    CHECK(tf.red.getValues() == TransferFunctionEditor::presetChannel(
-                                    TransferFunctionEditor::HotMetal, TransferFunctionEditor::Red));
+    CHECK(tf.red.getValues() == hot.channels[0]);
     CHECK(tf.function().evaluate(TransferFunction1D::Red, 0.2) ==
           doctest::Approx(0.5).epsilon(1e-6)); // 0 -> 1 over [0, 0.4]
     CHECK(history.size() == 1);

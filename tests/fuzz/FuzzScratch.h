@@ -34,9 +34,9 @@ public:
         write("buffer.bin", ramp.substr(0, 256));
     }
     ~FuzzScratch() {
-        for (const char* name :
-             {"data.raw", "data.raw.gz", "buffer.bin", "input.nrrd", "input.nhdr", "input.mha",
-              "input.mhd", "input.raw", "input.gltf", "input.glb"})
+        for (const char* name : {"data.raw", "data.raw.gz", "buffer.bin", "input.nrrd",
+                                 "input.nhdr", "input.mha", "input.mhd", "input.raw", "input.gltf",
+                                 "input.glb", "input.nii", "input.hdr", "input.dcm"})
             ::unlink((folder_ + "/" + name).c_str());
         ::rmdir(folder_.c_str());
     }

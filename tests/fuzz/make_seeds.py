@@ -174,3 +174,32 @@ gltf_words = ["asset", "version", "2.0", "scene", "scenes", "nodes", "children",
               "KHR_mesh_quantization", "data:application/octet-stream;base64,", "buffer.bin",
               "../", "glTF", "JSON", "BIN\\x00", "5126", "5123", "5125", "5121"]
 (here / "gltf.dict").write_text("".join('"%s"\n' % w for w in gltf_words))
+
+# NIfTI: a byte for .nii (0) or .hdr (1), then the file. A 4^3 int16 volume with a qform, a
+# gzip uint8 one, and the header of a .hdr/.img pair (its .img does not exist in the scratch
+# folder, so that seed ends in the missing-file error).
+def nifti(datatype=4, bitpix=16):
+    h = bytearray(348)
+    struct.pack_into("<i", h, 0, 348)
+    struct.pack_into("<8h", h, 40, 3, 4, 4, 4, 1, 1, 1, 1)
+    struct.pack_into("<hh", h, 70, datatype, bitpix)
+    struct.pack_into("<8f", h, 76, -1.0, 1.5, 1.5, 2.0, 0, 0, 0, 0)
+    struct.pack_into("<f", h, 108, 352.0)
+    h[123] = 2
+    struct.pack_into("<hh", h, 252, 1, 0)
+    struct.pack_into("<6f", h, 256, 0.0, 0.0, 0.5, 10, 20, 30)
+    h[344:348] = b"n+1\0"
+    voxels = struct.pack("<64h", *range(64)) if bitpix == 16 else bytes(range(64))
+    return bytes(h) + b"\0" * 4 + voxels
+
+
+d = folder("nifti")
+put(d, "qform-int16", b"\x00" + nifti())
+put(d, "uint8-gzip", b"\x00" + gzip.compress(nifti(2, 8), mtime=0))
+pair = bytearray(nifti()[:348])
+pair[344:348] = b"ni1\0"
+put(d, "pair-header", b"\x01" + bytes(pair))
+
+# DICOM: one slice of the derived head CT series (examples/data/derived/make_derived.py).
+d = folder("dicom")
+put(d, "ct-slice", (repo / "examples/data/derived/headsq_dicom/slice-024.dcm").read_bytes())

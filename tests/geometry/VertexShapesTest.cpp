@@ -187,6 +187,24 @@ TEST_CASE("a quad mesh makes (rows - 1) x (columns - 1) quads, materials per row
     CHECK(m.positions.size() == 3u * 4u);
 }
 
+TEST_CASE("a quad mesh winds its quads as Coin's quad strips do") {
+    // Coin sends (r, c) then (r+1, c) along a row's GL_QUAD_STRIP, so each quad runs (r, c)
+    // (r+1, c) (r+1, c+1) (r, c+1): with x along a row and y down the columns that is
+    // clockwise seen from +z, and SOLID culls the side facing +z.
+    const std::vector<glm::vec3> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    VertexAttributes a;
+    a.points = points;
+    Mesh m;
+    buildVertexShapeMesh(makeQuadMeshTopology(2, 2, 0, points.size()), a, m);
+    REQUIRE(m.positions.size() == 4u);
+    for (const glm::vec3& n : m.normals)
+        CHECK(glm::length(n - glm::vec3(0, 0, -1)) < 1e-6f);
+    REQUIRE(m.indices.size() == 6u);
+    const glm::vec3 e1 = m.positions[m.indices[1]] - m.positions[m.indices[0]];
+    const glm::vec3 e2 = m.positions[m.indices[2]] - m.positions[m.indices[0]];
+    CHECK(glm::cross(e1, e2).z < 0.0f);
+}
+
 TEST_CASE("line sets: PER_PART is per segment, PER_FACE per polyline") {
     const std::vector<glm::vec3> points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}};
     const std::vector<std::int32_t> counts = {3, 2};
@@ -268,7 +286,7 @@ TEST_CASE("given normals bind by coordIndex, normalIndex or per face; too few ge
     CHECK(m.normals[0] != glm::vec3(0, 1, 0)); // generated instead
 }
 
-TEST_CASE("texture coordinates: given, plane functions and Inventor's default mapping") {
+TEST_CASE("texture coordinates: given, plane functions and Coin's default mapping") {
     VertexAttributes a;
     a.points = kCubePoints;
     const ShapeTopology t = makeIndexedFaceSetTopology(kCubeFaces, kCubePoints.size());
@@ -276,9 +294,13 @@ TEST_CASE("texture coordinates: given, plane functions and Inventor's default ma
     a.defaultTextureCoords = true;
     buildVertexShapeMesh(t, a, m);
     REQUIRE(m.texCoords.size() == m.positions.size());
-    for (std::size_t v = 0; v < m.positions.size(); ++v) // a cube's ties: s along x, t along y
-        CHECK(m.texCoords[v] == glm::vec2(m.positions[v].x, m.positions[v].y));
-    CHECK(defaultTextureCoord({1, 2, 3}, {0, 0, 0}, {2, 4, 1}) == glm::vec2(0.5f, 0.25f));
+    for (std::size_t v = 0; v < m.positions.size(); ++v) // a cube's ties: s along z, t along y
+        CHECK(m.texCoords[v] == glm::vec2(m.positions[v].z, m.positions[v].y));
+    // Coin (SoTextureCoordinateBundle::initDefaultCallback): the two larger axes, the longer
+    // first, each over its own side.
+    CHECK(defaultTextureCoord({1, 2, 3}, {0, 0, 0}, {2, 4, 1}) == glm::vec2(0.5f, 0.5f));
+    CHECK(defaultTextureCoord({1, 2, 3}, {0, 0, 0}, {4, 2, 1}) == glm::vec2(0.25f, 1.0f));
+    CHECK(defaultTextureCoord({1, 2, 3}, {0, 0, 0}, {4, 0, 8}) == glm::vec2(0.375f, 0.25f));
     a.planeTextureCoords = true;
     a.planeS = {0, 0, 2};
     a.planeT = {1, 1, 0};

@@ -414,6 +414,12 @@ TEST_CASE("bad files throw errors that name the file and the glTF element") {
         loadError(triangleWithPositionAccessor(
             "unbacked.gltf", "{\"componentType\":5126,\"count\":4000000000,\"type\":\"VEC3\"}")),
         "without a bufferView exceeds"));
+    // Accessors count against a total of decoded values per file, checked before decoding:
+    // 16 Mi MAT4 elements (2^28 values) pass the per-accessor count but not the file's total.
+    CHECK(contains(
+        loadError(triangleWithPositionAccessor(
+            "total.gltf", "{\"componentType\":5126,\"count\":16777216,\"type\":\"MAT4\"}")),
+        "accessors decode more than 134217728 values in all"));
 
     GltfBuilder b;
     b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});

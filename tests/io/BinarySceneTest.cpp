@@ -14,6 +14,7 @@
 #include <volsg/io/SceneWriter.h>
 #include <volsg/io/UnknownNode.h>
 #include <volsg/nodes/Cube.h>
+#include <volsg/nodes/Texture2.h>
 
 using namespace volsg;
 
@@ -132,9 +133,9 @@ TEST_CASE("binary unknown types: standard ones from the table, others described"
               " IndexedFaceSet { coordIndex [ 0, 1, 2 ] vertexProperty VertexProperty {"
               " vertex 0 0 0 } } }");
     auto root = readSceneFromString(b.data, "scene.iv");
-    auto* texture = dynamic_cast<UnknownNode*>((*root->children())[0].get());
+    auto* texture = dynamic_cast<Texture2*>((*root->children())[0].get());
     REQUIRE(texture);
-    const ImageValue& image = dynamic_cast<SFImage*>(texture->findField("image"))->getValue();
+    const ImageValue& image = texture->image();
     CHECK(image.pixels == std::vector<std::uint8_t>{255, 0, 0, 0, 255, 0});
 }
 

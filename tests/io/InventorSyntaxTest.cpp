@@ -14,6 +14,7 @@
 #include <volsg/io/SceneWriter.h>
 #include <volsg/io/UnknownNode.h>
 #include <volsg/nodes/Cube.h>
+#include <volsg/nodes/ShapeHints.h>
 #include <volsg/nodes/Transform.h>
 
 using namespace volsg;
@@ -115,35 +116,39 @@ TEST_CASE("bad connections are errors with their position") {
 }
 
 TEST_CASE("standard Inventor types without a class need keepUnknownTypes and keep their fields") {
-    const std::string text = header + "Separator { Texture2 { filename \"wood.png\" wrapS CLAMP }"
-                                      " ShapeHints { vertexOrdering COUNTERCLOCKWISE } Cube { } }";
-    CHECK(errorOf(text).find("'Texture2' is a standard Inventor type") != std::string::npos);
+    const std::string text = header + "Separator { BumpMap { filename \"wood.png\" wrapS CLAMP }"
+                                      " CacheHint { memValue 0.25 } Cube { } }";
+    CHECK(errorOf(text).find("'BumpMap' is a standard Inventor type") != std::string::npos);
     auto root = roundTrip(text, keeping());
     auto* texture = dynamic_cast<UnknownNode*>((*root->children())[0].get());
     REQUIRE(texture);
-    CHECK(texture->fileTypeName() == "Texture2");
+    CHECK(texture->fileTypeName() == "BumpMap");
     CHECK(texture->description() == UnknownNode::Description::Inventor);
     CHECK(std::string(texture->findField("image")->typeName()) == "SFImage");
     CHECK(texture->findField("image")->isDefault());
     const std::string written = writeSceneToString(*root);
     CHECK(written.find("fields [") == std::string::npos); // Inventor knows these
     CHECK(written.find("wrapS CLAMP") != std::string::npos);
-    CHECK(errorOf(text.substr(0, text.size() - 2) + " Texture2 { nosuch 1 } }", keeping())
-              .find("unknown field 'nosuch' in Texture2") != std::string::npos);
+    CHECK(errorOf(text.substr(0, text.size() - 2) + " BumpMap { nosuch 1 } }", keeping())
+              .find("unknown field 'nosuch' in BumpMap") != std::string::npos);
 }
 
 TEST_CASE("a standard field our class lacks keeps the node as the standard type") {
-    const std::string text = header + "IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] vertexProperty"
-                                      " VertexProperty { vertex [ 0 0 0, 1 0 0, 0 1 0 ] } }";
-    CHECK(errorOf(text).find("unknown field 'vertexProperty' in IndexedFaceSet") !=
+    // DrawStyle has no linePatternScaleFactor (a Coin addition) here.
+    const std::string text = header + "DrawStyle { style LINES lineWidth 3"
+                                      " linePatternScaleFactor 2 }";
+    CHECK(errorOf(text).find("unknown field 'linePatternScaleFactor' in DrawStyle") !=
           std::string::npos);
     auto root = roundTrip(text, keeping());
-    auto* faces = dynamic_cast<UnknownNode*>(root.get());
-    REQUIRE(faces);
-    CHECK(faces->fileTypeName() == "IndexedFaceSet");
-    auto* index = dynamic_cast<MFInt32*>(faces->findField("coordIndex"));
-    REQUIRE(index);
-    CHECK(index->getValues() == std::vector<std::int32_t>{0, 1, 2, -1});
+    auto* style = dynamic_cast<UnknownNode*>(root.get());
+    REQUIRE(style);
+    CHECK(style->fileTypeName() == "DrawStyle");
+    auto* width = dynamic_cast<SFFloat*>(style->findField("lineWidth"));
+    REQUIRE(width);
+    CHECK(width->getValue() == 3.0f);
+    auto* scale = dynamic_cast<SFInt32*>(style->findField("linePatternScaleFactor"));
+    REQUIRE(scale);
+    CHECK(scale->getValue() == 2);
 }
 
 TEST_CASE("unknown types without a description keep their values as text") {
@@ -185,16 +190,13 @@ TEST_CASE("V1.0 files are read, with Coin's upgrade of ShapeHints") {
                            "Separator { ShapeHints { hints (SOLID | ORDERED) creaseAngle 0.5 }"
                            " Cube { } }";
     auto root = readSceneFromString(v1, "old.iv", keeping());
-    auto* hints = dynamic_cast<UnknownNode*>((*root->children())[0].get());
+    auto* hints = dynamic_cast<ShapeHints*>((*root->children())[0].get());
     REQUIRE(hints);
-    CHECK(hints->fileTypeName() == "ShapeHints");
-    CHECK(dynamic_cast<SFEnumWord*>(hints->findField("shapeType"))->getValue() == "SOLID");
-    CHECK(dynamic_cast<SFEnumWord*>(hints->findField("vertexOrdering"))->getValue() ==
-          "COUNTERCLOCKWISE");
-    CHECK(dynamic_cast<SFEnumWord*>(hints->findField("faceType"))->getValue() ==
-          "UNKNOWN_FACE_TYPE");
-    CHECK(dynamic_cast<SFFloat*>(hints->findField("creaseAngle"))->getValue() == 0.5f);
-    CHECK_FALSE(hints->findField("hints"));
+    CHECK(hints->shapeType() == ShapeHints::SOLID);
+    CHECK(hints->vertexOrdering() == ShapeHints::COUNTERCLOCKWISE);
+    CHECK(hints->faceType() == ShapeHints::UNKNOWN_FACE_TYPE);
+    CHECK(hints->creaseAngle() == 0.5f);
+    CHECK_FALSE(hints->field("hints"));
     // Written as V2.1, it reads back the same.
     const std::string written = writeSceneToString(*root);
     CHECK(written.rfind("#Inventor V2.1 ascii", 0) == 0);

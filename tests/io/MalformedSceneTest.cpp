@@ -96,6 +96,15 @@ TEST_CASE("an unknown node type without a fields description is an error at its 
     CHECK_ERROR(header + "Separator { widht 2 }", "bad.iv:2:13:", "unknown node type 'widht'");
 }
 
+TEST_CASE("an unknown node type close to a known one suggests it") {
+    CHECK_ERROR(header + "Separator {\n  Volum { }\n}\n",
+                "bad.iv:3:3:", "unknown node type 'Volum' (did you mean Volume?");
+    CHECK_ERROR(header + "PerspectivCamera { }", "bad.iv:2:1:", "(did you mean PerspectiveCamera?");
+    CHECK_ERROR(header + "transferfunction { }", "bad.iv:2:1:", "(did you mean TransferFunction?");
+    // Nothing near: no suggestion.
+    CHECK(errorOf(header + "Gizmo { }").find("did you mean") == std::string::npos);
+}
+
 TEST_CASE("an unknown field is an error naming the field and the node type") {
     CHECK_ERROR(header + "Cube { widht 2 }", "bad.iv:2:8:", "unknown field 'widht' in Cube");
     CHECK_ERROR(header + "Cube { 2 }", "bad.iv:2:8:", "unknown field '2' in Cube");

@@ -299,3 +299,35 @@ TEST_CASE("an empty render size throws an Error") {
     CHECK_THROWS_WITH_AS(renderer.render(*root, smallOptions(0, 10)), doctest::Contains("empty"),
                          Error);
 }
+
+TEST_CASE("render into a caller's image reads the frame top row first, reusing or resizing it") {
+    OSMesaContext context;
+    Renderer renderer;
+    auto root = Separator::create();
+    root->addChild(orthoCamera(2.0f));
+    auto material = Material::create();
+    material->diffuseColor = {glm::vec3(0.0f)};
+    material->ambientColor = {glm::vec3(0.0f)};
+    material->emissiveColor = {glm::vec3(0.25f, 0.5f, 0.75f)};
+    root->addChild(material);
+    auto translation = Transform::create();
+    translation->translation = glm::vec3(0.0f, 0.5f, 0.0f); // the cube in the top half
+    root->addChild(translation);
+    auto cube = Cube::create();
+    cube->width = 1.0f;
+    cube->height = 1.0f;
+    root->addChild(cube);
+    const RenderOptions options = smallOptions(32, 24);
+    const Image fresh = renderer.render(*root, options);
+    // The cube covers the top half: rows [0, 12) of 24 (y in [0, 1] of a view from -1 to 1).
+    CHECK(fresh.at(16, 4).r == doctest::Approx(0.25f));
+    CHECK(fresh.at(16, 20).r != doctest::Approx(0.25f));
+    for (const Image& start :
+         {Image(32, 24, glm::vec4(7.0f)), Image(5, 3, glm::vec4(7.0f)), Image()}) {
+        Image into = start;
+        renderer.render(*root, options, into);
+        CHECK(into.width == 32);
+        CHECK(into.height == 24);
+        CHECK(into.pixels == fresh.pixels); // every pixel overwritten, same orientation
+    }
+}

@@ -4,6 +4,9 @@
 // reference ray caster agree on which.
 #include <doctest/doctest.h>
 
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <volsg/context/OSMesaContext.h>
@@ -11,6 +14,7 @@
 #include <volsg/image/Image.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/render/Renderer.h>
+#include <volsg/volumeio/VolumeReader.h>
 #include <volsg/volumescene/ReferenceScene.h>
 
 using namespace volsg;
@@ -172,4 +176,71 @@ TEST_CASE("messages are bounded in length") {
     const Error e(std::string(3 << 20, 'x'), "file.iv", 1, 1);
     CHECK(std::string(e.what()).size() <= Error::kMaxMessageLength);
     CHECK(std::string(e.what()).rfind("file.iv:1:1: xxx", 0) == 0);
+}
+
+TEST_CASE("FLOAT values whose span overflows single precision are refused, not drawn blank") {
+    OSMesaContext context;
+    const auto path = std::filesystem::temp_directory_path() / "volsg-hostile-float-span.raw";
+    {
+        const float values[8] = {-3e38f, 3e38f, 0, 0, 0, 0, 0, 0}; // finite, span 6e38
+        std::ofstream out(path, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(values), sizeof values);
+    }
+    const std::string text =
+        kHeader + "Separator { " + kOrtho + " VolumeData { fileName \"" + path.string() +
+        "\" dimensions 2 2 2 dataType FLOAT } TransferFunction { } Volume { } }\n";
+    checkRefusedByBoth(renderBoth(text), "VolumeData", "wider than single precision");
+    std::filesystem::remove(path);
+}
+
+TEST_CASE("generator errors speak of the volume, not of internal functions") {
+    OSMesaContext context;
+    const std::string text = kHeader + "Separator { " + kOrtho +
+                             " VolumeData { generator MARSCHNER_LOBB dimensions 1 1 1 }"
+                             " TransferFunction { } Volume { } }\n";
+    const Outcome o = renderBoth(text);
+    checkRefusedByBoth(o, "VolumeData", "the Marschner-Lobb volume needs at least 2 voxels");
+    CHECK(o.gl.find("make") == std::string::npos);
+}
+
+TEST_CASE("a data file names files only inside its own folder, as glTF files do") {
+    namespace fs = std::filesystem;
+    const fs::path root = fs::temp_directory_path() / "volsg-hostile-contained";
+    fs::remove_all(root);
+    fs::create_directories(root / "inner");
+    {
+        std::ofstream raw(root / "outside.raw", std::ios::binary);
+        raw << std::string(8, '\x10');
+        std::ofstream inside(root / "inner" / "inside.raw", std::ios::binary);
+        inside << std::string(8, '\x10');
+    }
+    const auto header = [&](const std::string& dataFile) {
+        std::ofstream out(root / "inner" / "h.nhdr");
+        out << "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n"
+               "data file: "
+            << dataFile << "\n";
+        return (root / "inner" / "h.nhdr").string();
+    };
+    CHECK(readNrrd(header("inside.raw"))->dimensions() == glm::ivec3(2));
+    for (const std::string& escape :
+         {std::string("../outside.raw"), (root / "outside.raw").string()}) {
+        CAPTURE(escape);
+        std::string message;
+        try {
+            (void)readNrrd(header(escape));
+        } catch (const Error& e) {
+            message = e.what();
+        }
+        CHECK(message.find("h.nhdr") != std::string::npos);
+        CHECK(message.find("only inside its own folder") != std::string::npos);
+    }
+    fs::create_symlink(root / "outside.raw", root / "inner" / "link.raw");
+    std::string message;
+    try {
+        (void)readNrrd(header("link.raw"));
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    CHECK(message.find("symbolic link") != std::string::npos);
+    fs::remove_all(root);
 }

@@ -705,6 +705,28 @@ TEST_CASE("a recycled frame renders the same image, depth and picks as a fresh o
     CHECK(last.wroteDepth);
 }
 
+TEST_CASE(
+    "a recycled DVR frame (the vector warp, stale pixels cleared by it) matches a fresh one") {
+    // Without depth the warp takes four pixels a step and clears what the last frame drew only
+    // where it does not write: zoomed in, out, turned, then smaller.
+    auto grid = makeMarschnerLobb(24);
+    std::vector<ShearWarpObject> objects{objectOf(*grid, smoothColourRamp())};
+    ShearWarpRenderer fresh, recycling;
+    const ShearWarpView views[] = {orthoView(40, 1.2, 0.3), orthoView(40, 3.0, 0.9, 0.2),
+                                   orthoView(40, 2.0, -0.4), orthoView(40, 1.0, 1.3, -0.5)};
+    ShearWarpFrame last;
+    for (const ShearWarpView& view : views) {
+        const ShearWarpFrame expected = fresh.render(objects, view);
+        recycling.recycle(std::move(last));
+        last = recycling.render(objects, view);
+        REQUIRE(last.image.pixels.size() == expected.image.pixels.size());
+        CHECK(std::memcmp(last.image.pixels.data(), expected.image.pixels.data(),
+                          last.image.pixels.size() * sizeof(glm::vec4)) == 0);
+        CHECK(last.drawn == expected.drawn);
+        CHECK_FALSE(last.wroteDepth);
+    }
+}
+
 TEST_CASE("pure MIP takes the value-sorted path, close to the general path and the reference") {
     // RTVR 3.4: voxels sorted by value, drawn lowest first onto their nearest intermediate
     // pixel, each overwriting it. The general path resamples each slice bilinearly; nearest

@@ -6,6 +6,7 @@
 #include <volsg/core/Error.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/io/SceneWriter.h>
+#include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Switch.h>
 #include <volsg/nodes/TransferFunction.h>
@@ -327,4 +328,41 @@ TEST_CASE("valueSortedMip chooses the value-sorted or the general MIP path") {
                 << " MIP RMSE versus renderReference: " << error);
         CHECK(error < 0.01);
     }
+}
+
+TEST_CASE("a ShearWarpVolume without VolumeObjects draws the whole volume, as one WHOLE object "
+          "does") {
+    OSMesaContext context;
+    Renderer renderer;
+    const std::string tf = "    TransferFunction { alpha [ 0 0, 1 0.5 ] }\n";
+    const ref_ptr<Node> bare = readSceneFromString(sceneWith("SOFT_SPHERE", "", tf));
+    const ref_ptr<Node> whole =
+        readSceneFromString(sceneWith("SOFT_SPHERE", "", tf + "    VolumeObject { }\n"));
+    const Image a = renderer.render(*bare, smallOptions());
+    const Image b = renderer.render(*whole, smallOptions());
+    CHECK(rmse(a, b) == 0.0); // the same object, the same pixels
+    // Not blank: the sphere's middle stands out from the corner (the background).
+    const glm::vec4 middle = a.at(32, 32), corner = a.at(1, 1);
+    CHECK(glm::length(glm::vec3(middle) - glm::vec3(corner)) > 0.2f);
+    // And the reference sees it too.
+    CHECK(rmse(a, renderReference(*bare, smallOptions())) < 0.03);
+}
+
+TEST_CASE("a scene whose ShearWarpVolume has no camera gets an orthographic one") {
+    const ref_ptr<Node> root =
+        readSceneFromString("#Inventor V2.1 ascii\nSeparator {\n"
+                            "  VolumeData { generator SOFT_SPHERE dimensions 16 16 16 }\n"
+                            "  ShearWarpVolume { VolumeObject { } }\n}\n");
+    const SceneCamera made = findOrMakeCamera(*root, 1.0);
+    REQUIRE(made.camera);
+    CHECK(made.camera->isA<OrthographicCamera>());
+    // It renders (a perspective camera would be an Error), and shows the sphere.
+    OSMesaContext context;
+    Renderer renderer;
+    const Image image = renderer.render(*root, smallOptions(48));
+    CHECK(glm::length(glm::vec3(image.at(24, 24)) - glm::vec3(image.at(1, 1))) > 0.2f);
+    // Without a ShearWarpVolume a scene keeps the perspective default.
+    const ref_ptr<Node> plain = readSceneFromString(
+        "#Inventor V2.1 ascii\nSeparator { VolumeData { generator SOFT_SPHERE } Volume { } }\n");
+    CHECK(findOrMakeCamera(*plain, 1.0).camera->isA<PerspectiveCamera>());
 }

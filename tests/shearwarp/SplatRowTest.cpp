@@ -92,27 +92,15 @@ Tables randomTables(std::mt19937& rng) {
     return t;
 }
 
-/// The definition (SplatRow.h), one voxel at a time with glm: the colour from the lookup,
-/// transparent and hidden voxels left out, (1 - fu) C and fu C (face weights on the outer
-/// columns) added to the line.
+/// The definition (SplatRow.h), one voxel at a time with glm: hidden voxels left out (before
+/// their colour is looked up), the colour from the lookup, transparent voxels left out, (1 - fu) C
+/// and fu C (face weights on the outer columns) added to the line, the left column marked.
 void splatByDefinition(const SplatRow& r, std::vector<glm::vec4>& line, int& lo, int& hi,
-                       SplatSkip& skip, const std::vector<std::int32_t>* openA,
+                       std::vector<bool>& marked, int& voxels, SplatSkip& skip,
+                       const std::vector<std::int32_t>* openA,
                        const std::vector<std::int32_t>* openB) {
     for (std::uint32_t i = r.begin; i < r.end; ++i) {
         const std::uint32_t v = r.packed[i];
-        glm::vec4 colour(0.0f);
-        switch (r.lookup) {
-        case SplatLookup::MipValue:
-            colour = glm::vec4(float(r.values[i]) * (1.0f / 4095.0f), 0.0f, 0.0f, 1.0f);
-            break;
-        case SplatLookup::Direct:
-            colour = r.rgba[PackedVoxel::attributes16(v) & r.mask];
-            break;
-        case SplatLookup::TwoStage:
-            colour = r.rgba[PackedVoxel::second4(v) * 256 + r.lut2[PackedVoxel::main12(v)]];
-            break;
-        }
-        if ((!r.fresh || r.skipHidden) && colour.a <= 0.0f) continue;
         const unsigned a = PackedVoxel::a(v);
         const int col = int(a) + r.colBase;
         if (r.skipHidden) {
@@ -133,13 +121,36 @@ void splatByDefinition(const SplatRow& r, std::vector<glm::vec4>& line, int& lo,
                 skip.visibleThrough = col;
             }
         }
+        glm::vec4 colour(0.0f);
+        switch (r.lookup) {
+        case SplatLookup::MipValue:
+            colour = glm::vec4(float(r.values[i]) * (1.0f / 4095.0f), 0.0f, 0.0f, 1.0f);
+            break;
+        case SplatLookup::Direct:
+            colour = r.rgba[PackedVoxel::attributes16(v) & r.mask];
+            break;
+        case SplatLookup::TwoStage:
+            colour = r.rgba[PackedVoxel::second4(v) * 256 + r.lut2[PackedVoxel::main12(v)]];
+            break;
+        }
+        if ((!r.fresh || r.skipHidden) && colour.a <= 0.0f) continue;
         const float w0 = a == r.edgeA0 ? (r.fu <= 0.5f ? 1.0f : 0.0f) : 1.0f - r.fu;
         const float w1 = a == r.edgeA1 ? (r.fu >= 0.5f ? 1.0f : 0.0f) : r.fu;
         line[std::size_t(col)] = line[std::size_t(col)] + w0 * colour;
         line[std::size_t(col) + 1] = line[std::size_t(col) + 1] + w1 * colour;
         lo = std::min(lo, col);
         hi = std::max(hi, col + 2);
+        marked[std::size_t(col)] = true;
+        ++voxels;
     }
+}
+
+/// The columns whose bits are set in a mask of `words` words.
+std::vector<bool> markedColumns(const std::vector<std::uint64_t>& mask, int width) {
+    std::vector<bool> marked(std::size_t(width) + 1, false);
+    for (int c = 0; c <= width; ++c)
+        marked[std::size_t(c)] = (mask[std::size_t(c >> 6) + 1] >> (c & 63)) & 1u;
+    return marked;
 }
 
 bool sameBits(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
@@ -224,15 +235,27 @@ TEST_CASE("every row splat kernel gives the definition's line bit for bit") {
                             startSkip.hidden = 3;
                         }
 
+                        // Marks part 0 left (fresh: none); one word before and after.
+                        std::vector<std::uint64_t> startMask(std::size_t(width) / 64 + 3, 0);
+                        if (!fresh)
+                            for (int c = 0; c < width; ++c)
+                                if (unit(rng) < 0.3f)
+                                    startMask[std::size_t(c >> 6) + 1] |= 1ull << (c & 63);
                         std::vector<glm::vec4> expected = startLine;
                         int expectedLo = startLo, expectedHi = startHi;
+                        std::vector<bool> expectedMarks = markedColumns(startMask, width);
+                        const int startVoxels = fresh ? 0 : int(rng() % 50);
+                        int expectedVoxels = startVoxels;
                         SplatSkip expectedSkip = startSkip;
-                        splatByDefinition(row, expected, expectedLo, expectedHi, expectedSkip,
+                        splatByDefinition(row, expected, expectedLo, expectedHi, expectedMarks,
+                                          expectedVoxels, expectedSkip,
                                           row.skipHidden && hasA ? &linksA : nullptr,
                                           row.skipHidden && hasB ? &linksB : nullptr);
                         for (SimdLevel level : levels) {
                             std::vector<glm::vec4> got = startLine;
-                            SplatLine line{got.data(), startLo, startHi};
+                            std::vector<std::uint64_t> mask = startMask;
+                            SplatLine line{got.data(), startLo, startHi, mask.data() + 1,
+                                           startVoxels};
                             SplatSkip skip = startSkip;
                             std::vector<std::int32_t> openA = linksA, openB = linksB;
                             row.openA = row.skipHidden && hasA ? openA.data() : nullptr;
@@ -244,6 +267,9 @@ TEST_CASE("every row splat kernel gives the definition's line bit for bit") {
                             CHECK(sameBits(got, expected));
                             CHECK(line.lo == expectedLo);
                             CHECK(line.hi == expectedHi);
+                            CHECK(markedColumns(mask, width) == expectedMarks);
+                            CHECK(line.voxels == expectedVoxels);
+                            CHECK(mask.front() == 0u); // the word before is only read
                             CHECK(skip.hidden == expectedSkip.hidden);
                             CHECK(skip.hiddenBefore == expectedSkip.hiddenBefore);
                             CHECK(skip.visibleThrough == expectedSkip.visibleThrough);
@@ -280,7 +306,8 @@ TEST_CASE("the row splat splits a voxel between two columns and hides covered vo
     for (SimdLevel level : {SimdLevel::Scalar, SimdLevel::Avx2}) {
         if (!simdLevelAvailable(level)) continue;
         std::vector<glm::vec4> pixels(9, glm::vec4(0.0f));
-        SplatLine line{pixels.data(), kNone, 0};
+        std::vector<std::uint64_t> mask(3, 0);
+        SplatLine line{pixels.data(), kNone, 0, mask.data() + 1};
         SplatSkip skip;
         row.skipHidden = false;
         RowSplat::splat(level, row, line, skip);
@@ -293,10 +320,12 @@ TEST_CASE("the row splat splits a voxel between two columns and hides covered vo
         CHECK(pixels[6].w == 0.125f);
         CHECK(line.lo == 2);
         CHECK(line.hi == 7);
+        CHECK(mask[1] == 0b101100u); // the voxels' left columns 2, 3 and 5
         // Columns 2-4 stopped in both rows: a = 0 and 1 are hidden, a = 3 (columns 5, 6) not.
         std::vector<std::int32_t> openA{0, 1, 5, 5, 5, 5, 6, 7}, openB = openA;
         std::fill(pixels.begin(), pixels.end(), glm::vec4(0.0f));
-        line = SplatLine{pixels.data(), kNone, 0};
+        mask.assign(3, 0);
+        line = SplatLine{pixels.data(), kNone, 0, mask.data() + 1};
         row.skipHidden = true;
         row.openA = openA.data();
         row.openB = openB.data();
@@ -305,6 +334,7 @@ TEST_CASE("the row splat splits a voxel between two columns and hides covered vo
         CHECK(skip.hiddenBefore == 4);
         CHECK(line.lo == 5);
         CHECK(line.hi == 7);
+        CHECK(mask[1] == 0b100000u); // column 5 alone
         CHECK(pixels[5].w == 0.375f);
     }
 }

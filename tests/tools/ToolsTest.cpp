@@ -108,6 +108,29 @@ TEST_CASE("volsg-render fills the background colour it is given") {
     }
 }
 
+TEST_CASE("volsg-render --time runs the scene's engines and animated nodes to that time") {
+    // A Rotor at a quarter turn per second under a bar along x: at 1 s the bar stands along y.
+    const fs::path scene = scratch("rotor.iv");
+    std::ofstream(scene) << "#Inventor V2.1 ascii\nSeparator {\n"
+                            "OrthographicCamera { position 0 0 5 height 4 }\n"
+                            "LightModel { model BASE_COLOR } BaseColor { rgb 1 0 0 }\n"
+                            "Rotor { rotation 0 0 1 0 speed 0.25 }\n"
+                            "Cube { width 3 height 0.5 depth 0.5 } }\n";
+    const auto red = [&](double seconds, int column, int row) {
+        const fs::path out = scratch("rotor.pfm");
+        REQUIRE(run(tool("volsg-render") + " " + scene.string() + " -o " + out.string() +
+                    " --size 32x32 --time " + std::to_string(seconds))
+                    .status == 0);
+        return volsg::readPfm(out.string()).at(column, row).r > 0.5f;
+    };
+    // 8 pixels per unit: world (1.2, 0) is pixel (25, 16), world (0, 1.2) pixel (16, 6).
+    CHECK(red(0.0, 25, 16));
+    CHECK_FALSE(red(0.0, 16, 6));
+    CHECK(red(1.0, 16, 6));
+    CHECK_FALSE(red(1.0, 25, 16));
+    CHECK(run(tool("volsg-render") + " " + scene.string() + " -o x.png --time -1").status != 0);
+}
+
 TEST_CASE("volsg-render writes a scene back when the output is .iv") {
     const fs::path out = scratch("every-node.iv");
     const Run r =

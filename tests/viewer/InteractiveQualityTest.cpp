@@ -2,6 +2,8 @@
 // it back, still frames leave it alone.
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include "view/InteractiveQuality.h"
 
 using volsg::InteractiveQuality;
@@ -13,7 +15,7 @@ TEST_CASE("a slow interactive frame lowers the plane scale in proportion") {
     CHECK(q.scale() == doctest::Approx(0.5).epsilon(1e-12));
     q.frameDone(true, 1000.0); // far too slow: at most a quarter per frame
     CHECK(q.scale() == doctest::Approx(0.125).epsilon(1e-12));
-    for (int i = 0; i < 20; ++i)
+    for (int i = 0; i < 40; ++i)
         q.frameDone(true, 5000.0);
     CHECK(q.scale() == doctest::Approx(InteractiveQuality::minimumScale).epsilon(1e-12));
 }
@@ -39,4 +41,29 @@ TEST_CASE("still frames do not change the interactive plane scale") {
     const double learned = q.scale();
     q.frameDone(false, 10.0);
     CHECK(q.scale() == learned);
+}
+
+TEST_CASE("the cost goes into the resolution first, then into the planes") {
+    InteractiveQuality q;
+    CHECK(q.resolutionScale() == 1.0);
+    CHECK(q.planeScale() == 1.0);
+    q.frameDone(true, 160.0); // half the cost: sqrt(0.5) = 0.707 -> 12/16 of the width
+    CHECK(q.resolutionScale() == 0.75);
+    CHECK(q.planeScale() == doctest::Approx(0.5 / 0.5625).epsilon(1e-12));
+    for (int i = 0; i < 40; ++i) // far too slow: the smallest cost
+        q.frameDone(true, 5000.0);
+    CHECK(q.scale() == InteractiveQuality::minimumScale);
+    CHECK(q.resolutionScale() == 0.25);     // a quarter of the width and height
+    CHECK(q.planeScale() == 0.25);          // and a quarter of the planes
+    for (int step = 0; step < 40; ++step) { // on the way back: resolution x planes = cost
+        q.frameDone(true, 20.0);
+        CHECK(q.resolutionScale() >= 0.25);
+        CHECK(q.resolutionScale() <= 1.0);
+        CHECK(q.planeScale() >= 0.25);
+        CHECK(q.planeScale() <= 1.0);
+        CHECK(q.resolutionScale() * 16.0 == std::round(q.resolutionScale() * 16.0));
+        if (q.scale() >= InteractiveQuality::minimumPixelFraction) // planes kept while it can
+            CHECK(q.resolutionScale() * q.resolutionScale() * q.planeScale() ==
+                  doctest::Approx(q.scale()).epsilon(1e-12));
+    }
 }

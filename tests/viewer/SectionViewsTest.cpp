@@ -4,7 +4,11 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
+
+#include <unistd.h>
 
 #include <volsg/context/OSMesaContext.h>
 #include <volsg/gl/GlDebug.h>
@@ -52,12 +56,13 @@ TEST_CASE("a section view pixel maps to the voxel on its plane and back") {
     REQUIRE(views.sceneSlices().size() == 2);
     CHECK(views.sceneSlices()[0]->sliceNumber() == 2);
     // Axial (along z) at 200 x 100: the 16 x 16 box is limited by its height, 1.06 * 16 high,
-    // so a pixel is 16.96 / 100 world units; x runs right, y up, centred on the box's centre.
+    // so a pixel is 16.96 / 100 world units; radiological: x (to the patient's right) runs
+    // left on the screen, y (anterior) up, centred on the box's centre.
     const double unit = 1.06 * 16.0 / 100.0;
     for (const glm::dvec2 pixel :
          {glm::dvec2(100.0, 50.0), glm::dvec2(60.5, 20.25), glm::dvec2(140.0, 93.0)}) {
         CAPTURE(pixel.x);
-        const double x = (pixel.x - 100.0) * unit, y = (50.0 - pixel.y) * unit; // local
+        const double x = (100.0 - pixel.x) * unit, y = (50.0 - pixel.y) * unit; // local
         const glm::ivec3 expected(int(std::floor((x + 8.0) / 0.5)), int(std::floor(y + 8.0)), 1);
         const auto voxel = views.voxelAtPixel(SectionViews::Axial, pixel, 200, 100);
         REQUIRE(voxel);
@@ -69,11 +74,12 @@ TEST_CASE("a section view pixel maps to the voxel on its plane and back") {
     }
     // Outside the box (the margin at the left of the wide view): no voxel.
     CHECK_FALSE(views.voxelAtPixel(SectionViews::Axial, {10.0, 50.0}, 200, 100));
-    // Sagittal (along x): y runs right, z up; the plane is the cursor's x.
+    // Sagittal (along x, seen from the patient's left): y (anterior) runs left, z up; the plane
+    // is the cursor's x.
     const auto sagittal = views.voxelAtPixel(SectionViews::Sagittal, {80.0, 10.0}, 100, 100);
     REQUIRE(sagittal);
     CHECK(sagittal->x == 16);
-    CHECK(sagittal->y == int(std::floor((80.0 - 50.0) * unit + 8.0)));
+    CHECK(sagittal->y == int(std::floor((50.0 - 80.0) * unit + 8.0)));
     CHECK(sagittal->z == int(std::floor(((50.0 - 10.0) * unit + 8.0) / 2.0)));
     // World coordinates include the volume's transform.
     const glm::dvec3 centre = views.worldOf({0, 0, 0});
@@ -144,7 +150,7 @@ TEST_CASE("a section view shows the volume's box where its camera puts it") {
     o.background = glm::vec3(1.0f, 0.0f, 1.0f); // magenta: no ramp grey looks like it
     o.camera = views.camera(SectionViews::Coronal, 2.0);
     const Image image = gl.renderer.render(views.graph(SectionViews::Coronal), o);
-    // Coronal: x right, z up; the 16 x 16 box is 16 / (1.06 * 16) of the height, centred.
+    // Coronal: x left (radiological), z up; the 16 x 16 box is 16 / (1.06 * 16) of the height.
     const double half = 0.5 * 50.0 / 1.06;
     int wrong = 0;
     for (int y = 0; y < 50; ++y)
@@ -156,6 +162,104 @@ TEST_CASE("a section view shows the volume's box where its camera puts it") {
             if ((dx > half + 1.0 || dy > half + 1.0) && !magenta) ++wrong; // outside: nothing
         }
     CHECK(wrong == 0);
-    // Grey rises with x (the ramp): left darker than right.
-    CHECK(image.at(35, 25).r < image.at(65, 25).r);
+    // Grey rises with x (the ramp, towards the patient's right): the screen's left is brighter.
+    CHECK(image.at(35, 25).r > image.at(65, 25).r);
+}
+
+namespace {
+
+/// Mean red of a rectangle of an image.
+double meanRed(const Image& image, int x0, int y0, int x1, int y1) {
+    double sum = 0.0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x)
+            sum += image.at(x, y).r;
+    return sum / double((x1 - x0) * (y1 - y0));
+}
+
+} // namespace
+
+TEST_CASE("section views are head up, radiological (patient's left on the right), and flip") {
+    // A 16^3 volume asymmetric along every axis: + 40 on the patient's left (x < 8), + 80
+    // anterior (y >= 8), + 120 superior (z >= 8), so each quadrant of a view has its own grey.
+    // Stored as the viewer's convention says (z inferior to superior), or head first (z
+    // reversed, as VTK's headsq) with the patient axes saying so.
+    for (const bool headFirst : {false, true}) {
+        CAPTURE(headFirst);
+        const std::string path = (std::filesystem::temp_directory_path() /
+                                  ("volsg-sections-" + std::to_string(getpid()) + ".raw"))
+                                     .string();
+        {
+            std::ofstream out(path, std::ios::binary);
+            for (int z = 0; z < 16; ++z)
+                for (int y = 0; y < 16; ++y)
+                    for (int x = 0; x < 16; ++x)
+                        out.put(char(10 + 40 * (x < 8) + 80 * (y >= 8) +
+                                     120 * ((headFirst ? 15 - z : z) >= 8)));
+        }
+        Offscreen gl;
+        RenderOptions o;
+        o.width = 64;
+        o.height = 64;
+        auto root =
+            readSceneFromString("#Inventor V2.1 ascii\n"
+                                "Separator {\n"
+                                "  VolumeData { fileName \"" +
+                                path +
+                                "\" dimensions 16 16 16 }\n"
+                                "  TransferFunction { dataRange 0 255 alpha [ 0 1, 1 1 ] }\n"
+                                "  OrthoSlice { }\n"
+                                "}\n");
+        SectionViews views;
+        REQUIRE(views.attach(*root));
+        // Every plane through the patient's left, posterior, inferior (or superior, head first:
+        // each plane's content is the same either way).
+        views.setCursor({5, 5, 5});
+        if (headFirst) {
+            // Unknown to the views, a head-first volume comes out feet up...
+            o.camera = views.camera(SectionViews::Coronal, 1.0);
+            const Image wrong = gl.renderer.render(views.graph(SectionViews::Coronal), o);
+            CHECK(meanRed(wrong, 8, 8, 56, 28) < meanRed(wrong, 8, 36, 56, 56));
+            // ... and head up once its axes are known.
+            views.setPatientAxes(PatientAxes{{1.0, 1.0, -1.0}});
+        }
+        auto render = [&](int section) {
+            o.camera = views.camera(section, 1.0);
+            return gl.renderer.render(views.graph(section), o);
+        };
+        // The quadrants' greys (the box fills 64 / 1.06 pixels, centred): top/bottom and
+        // screen-left/screen-right halves, sampled away from the middle and the margin.
+        struct Halves {
+            double top, bottom, left, right;
+        };
+        auto halves = [&](const Image& image) {
+            return Halves{meanRed(image, 8, 8, 56, 28), meanRed(image, 8, 36, 56, 56),
+                          meanRed(image, 8, 8, 28, 56), meanRed(image, 36, 8, 56, 56)};
+        };
+        const double superior = 120.0 / 255.0, anterior = 80.0 / 255.0, left = 40.0 / 255.0;
+        for (const bool flipped : {false, true}) {
+            CAPTURE(flipped);
+            views.setFlipped(flipped);
+            const double side = flipped ? -1.0 : 1.0; // radiological: + on the screen's right
+            const Halves coronal = halves(render(SectionViews::Coronal));
+            CHECK(coronal.top - coronal.bottom ==
+                  doctest::Approx(superior).epsilon(0.02)); // head up
+            CHECK(coronal.right - coronal.left == doctest::Approx(side * left).epsilon(0.02));
+            const Halves sagittal = halves(render(SectionViews::Sagittal));
+            CHECK(sagittal.top - sagittal.bottom == doctest::Approx(superior).epsilon(0.02));
+            // Radiological sagittal: anterior on the screen's left.
+            CHECK(sagittal.left - sagittal.right == doctest::Approx(side * anterior).epsilon(0.02));
+            const Halves axial = halves(render(SectionViews::Axial));
+            CHECK(axial.top - axial.bottom ==
+                  doctest::Approx(anterior).epsilon(0.02)); // anterior up
+            CHECK(axial.right - axial.left == doctest::Approx(side * left).epsilon(0.02));
+            // Pixels and voxels agree with the picture: the top-right pixel of the coronal view is
+            // superior, and on the patient's left when radiological.
+            const auto voxel = views.voxelAtPixel(SectionViews::Coronal, {50.0, 10.0}, 64, 64);
+            REQUIRE(voxel);
+            CHECK((voxel->z >= 8) == !headFirst);
+            CHECK((voxel->x < 8) == !flipped);
+        }
+        std::filesystem::remove(path);
+    }
 }

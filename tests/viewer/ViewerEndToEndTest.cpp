@@ -52,7 +52,7 @@ TEST_CASE("scripted viewer session rotates, clips, edits the transfer function a
     auto file = [&](const char* name) { return (dir / name).string(); };
     {
         std::ofstream script(file("script.txt"));
-        // The 800x500 window: panels on the left (224 px) and right (272 px); the view between.
+        // The 800x500 window: the panel column on the right (260 px), the view left of it.
         script << "wait 1\n"
                << "screenshot " << file("s0.png") << " scene\n"
                << "drag left 330 100 400 100 2\n" // trackball: the camera orbits the origin
@@ -66,7 +66,10 @@ TEST_CASE("scripted viewer session rotates, clips, edits the transfer function a
                << "key m\n"
                << "screenshot " << file("s2.png")
                << " scene\n"
-               // The alpha channel's end point (1, 0.6) dragged down to (1, 0.1).
+               // The alpha channel's end point (1, 0.6) dragged down to (1, 0.1), with the
+               // transfer-function section scrolled to the top of the column.
+               << "panel tf\n"
+               << "wait 1\n"
                << "drag left tf:1,0.6 tf:1,0.1 2\n"
                << "screenshot " << file("s3.png") << " scene\n"
                << "save " << file("saved.iv") << "\n"

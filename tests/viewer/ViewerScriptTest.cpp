@@ -131,3 +131,27 @@ TEST_CASE("antialiasing modes have names both ways and unknown names are errors"
     CHECK(parseAntialias("2x2") == Antialias::Supersample);
     CHECK_THROWS_AS(parseAntialias("8x"), Error);
 }
+
+TEST_CASE("orientation and preset commands, and their errors") {
+    const auto steps = parseViewerScript("view left\n"
+                                         "sections neurological\n"
+                                         "axes + - +\n"
+                                         "preset both CT angiography (MIP)\n",
+                                         "s.txt");
+    REQUIRE(steps.size() == 4);
+    CHECK(steps[0].kind == ScriptStep::Kind::View);
+    CHECK(steps[0].text == "left");
+    CHECK(steps[1].kind == ScriptStep::Kind::Sections);
+    CHECK(steps[1].text == "neurological");
+    CHECK(steps[2].kind == ScriptStep::Kind::Axes);
+    CHECK(steps[2].voxel == glm::ivec3(1, -1, 1));
+    CHECK(steps[3].kind == ScriptStep::Kind::Preset);
+    CHECK(steps[3].frames == 2); // PresetApply::Both
+    CHECK(steps[3].text == "CT angiography (MIP)");
+    CHECK_THROWS_AS(parseViewerScript("view sideways\n", "s"), Error);
+    CHECK_THROWS_AS(parseViewerScript("sections upside-down\n", "s"), Error);
+    CHECK_THROWS_AS(parseViewerScript("axes + +\n", "s"), Error);
+    CHECK_THROWS_AS(parseViewerScript("axes + * +\n", "s"), Error);
+    CHECK_THROWS_AS(parseViewerScript("preset all CT bone\n", "s"), Error);
+    CHECK_THROWS_AS(parseViewerScript("preset colour\n", "s"), Error);
+}

@@ -1,5 +1,7 @@
 #include "SectionViews.h"
 
+#include "PatientOrientation.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -55,11 +57,6 @@ protected:
         }
     }
 };
-
-/// The view direction and up of each section in the volume's local coordinates: looking along
-/// -x (y to the right, z up), +y (x right, z up) and -z (x right, y up).
-constexpr glm::dvec3 kForward[3] = {{-1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
-constexpr glm::dvec3 kUp[3] = {{0, 0, 1}, {0, 0, 1}, {0, 1, 0}};
 
 } // namespace
 
@@ -155,12 +152,19 @@ bool SectionViews::update(Node& root) {
 }
 
 ref_ptr<Camera> SectionViews::camera(int section, double aspect) const {
+    // The view's patient directions (radiological or flipped) in the volume's local axes, then
+    // in the world through its model matrix. Screen right and up are what the convention
+    // fixes; the camera looks along up x right, which is the patient's forward unless the
+    // volume's axes are a mirror image of RAS (then it looks from the other side of the
+    // plane, which shows the same section the right way round).
+    const ViewDirection d = sectionViewDirection(section, flipped_);
+    const glm::dvec3 upLocal = patientAxes_.toLocal(d.up);
+    const glm::dvec3 rightLocal = patientAxes_.toLocal(glm::cross(d.forward, d.up));
     const glm::dmat3 linear(model_);
     const glm::dvec3 extent = grid_->extent();
-    const glm::dvec3 forward = glm::normalize(linear * kForward[section]);
-    const glm::dvec3 up = glm::normalize(linear * kUp[section]);
-    const glm::dvec3 rightLocal = glm::cross(kForward[section], kUp[section]);
-    const double upExtent = glm::length(linear * (kUp[section] * extent));
+    const glm::dvec3 up = glm::normalize(linear * upLocal);
+    const glm::dvec3 forward = glm::normalize(glm::cross(up, linear * rightLocal));
+    const double upExtent = glm::length(linear * (upLocal * extent));
     const double rightExtent = glm::length(linear * (rightLocal * extent));
     const double depth = glm::length(linear * extent); // the box's diagonal
     auto camera = OrthographicCamera::create();
@@ -170,9 +174,7 @@ ref_ptr<Camera> SectionViews::camera(int section, double aspect) const {
     camera->focalDistance = float(depth);
     camera->nearDistance = float(0.01 * depth);
     camera->farDistance = float(2.0 * depth);
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, up));
-    camera->orientation =
-        rotationFromQuat(glm::quat_cast(glm::dmat3(right, glm::cross(right, forward), -forward)));
+    camera->orientation = rotationFromQuat(cameraOrientation(forward, up));
     return camera;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The viewer's three orthogonal section views of the scene's first volume (sagittal, coronal,
-// axial: looking along the volume's x, y and z axes) and the linked 3D cursor.
+// axial: looking along the volume's x, y and z axes, in radiological convention or flipped) and
+// the linked 3D cursor.
 //
 // Each section view is an orthographic camera on a small graph that USEs the scene's own
 // VolumeData and TransferFunction nodes under the volume's model matrix:
@@ -22,6 +23,8 @@
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/OrthoSlice.h> // complete: held by ref_ptr
 #include <volsg/nodes/VolumeData.h>
+
+#include "PatientOrientation.h"
 
 namespace volsg {
 
@@ -56,6 +59,15 @@ public:
     TransferFunction* transferFunction() const { return transferFunction_; }
     const glm::dmat4& model() const { return model_; }
 
+    /// Radiological convention (the patient's left on the screen's right; sagittal: anterior on
+    /// the left), or flipped: neurological (left on the left; sagittal: anterior on the right).
+    /// Head (axial: anterior) up either way.
+    void setFlipped(bool flipped) { flipped_ = flipped; }
+    bool flipped() const { return flipped_; }
+    /// How the volume's axes run in patient coordinates (PatientOrientation.h); by default the
+    /// viewer's convention (x to the patient's right, y anterior, z superior).
+    void setPatientAxes(const PatientAxes& axes) { patientAxes_ = axes; }
+    const PatientAxes& patientAxes() const { return patientAxes_; }
     /// The orthographic camera of a section view with this aspect (width / height), in world
     /// coordinates: the volume's box fills the view with a small margin.
     ref_ptr<Camera> camera(int section, double aspect) const;
@@ -87,6 +99,8 @@ private:
     std::array<OrthoSlice*, 3> slices_{};
     std::vector<ref_ptr<OrthoSlice>> sceneSlices_;
     glm::ivec3 cursor_{0};
+    bool flipped_ = false;
+    PatientAxes patientAxes_;
 };
 
 } // namespace volsg

@@ -76,12 +76,10 @@ void SeriesPanel::draw(double now) {
         count = series_->stepCount();
         s = series_->cache().stats();
     } catch (const Error& e) {
-        ImGui::Begin("Series");
         ImGui::TextWrapped("%s", e.what());
-        ImGui::End();
         return;
     }
-    ImGui::Begin("Series");
+    if (!ImGui::CollapsingHeader("Series", ImGuiTreeNodeFlags_DefaultOpen)) return;
     int step = series_->shownStep();
     if (ImGui::SliderInt("step", &step, 0, count - 1)) setStep(step);
     if (ImGui::Button("<")) stepBy(-1);
@@ -100,7 +98,6 @@ void SeriesPanel::draw(double now) {
                 double(s.diskBytes) / 1048576.0);
     ImGui::Text("%llu extracted, %llu read back, %llu waits", (unsigned long long)s.extractions,
                 (unsigned long long)s.diskReads, (unsigned long long)s.waits);
-    ImGui::End();
 }
 
 } // namespace volsg

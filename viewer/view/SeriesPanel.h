@@ -29,7 +29,7 @@ public:
     void stepBy(int delta);
     /// Called once per frame: moves playback on. Returns true when the step changed.
     bool update(double now);
-    /// The ImGui window (call between NewFrame and Render).
+    /// Draws its section (a collapsing header) into the current window: the panel column.
     void draw(double now);
 
 private:

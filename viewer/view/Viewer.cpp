@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 
@@ -83,10 +84,14 @@ std::vector<Field*> textFieldsOf(Node& node) {
 
 } // namespace
 
-Viewer::Viewer(ViewerOptions options) : options_(std::move(options)) {
+Viewer::Viewer(ViewerOptions options)
+    : options_(std::move(options)), startTime_(std::chrono::steady_clock::now()) {
     if (!options_.scriptPath.empty())
         script_ = parseViewerScript(readText(options_.scriptPath), options_.scriptPath);
-    root_ = readSceneOrVoxelFile(options_.scenePath);
+    root_ = readSceneForFile(options_.scenePath, options_.open);
+    // A scene file's text is kept for saving in place; a data file's scene is saved beside it.
+    if (scenePathForSaving(options_.scenePath, options_.open) == options_.scenePath)
+        takeSceneText();
     sceneTime_ = std::filesystem::last_write_time(options_.scenePath);
 
     GlfwWindowOptions windowOptions;
@@ -120,6 +125,7 @@ Viewer::Viewer(ViewerOptions options) : options_(std::move(options)) {
     if (!ImGui_ImplGlfw_InitForOpenGL(w, true) || !ImGui_ImplOpenGL3_Init("#version 330 core"))
         throw Error("Dear ImGui could not start on this GL context");
 
+    showMessageFrame(loadingMessage());
     loadScene();
     setupCamera();
     setNavigationMode(options_.navigation);
@@ -139,6 +145,7 @@ Viewer::~Viewer() {
 }
 
 void Viewer::loadScene() {
+    refineStage_ = 0; // a new scene: a coarse first image, then the full one
     manipulators_.clear();
     history_.clear();
     activeDrag_.end();
@@ -204,7 +211,7 @@ void Viewer::onKey(int key, int mods) {
 }
 
 bool Viewer::isInteracting() const {
-    if (drag_ != Drag::None && drag_ != Drag::Pending) return true;
+    if (drag_ != Drag::None && drag_ != Drag::Pending && drag_ != Drag::SectionPending) return true;
     if (fly_ && fly_->speed() != 0.0) return true;            // the view moves every frame
     if (navigation_ && navigation_->isSeeking()) return true; // the seek flies every frame
     // Dragging in an editor canvas or on a slider counts too: the render should keep up.
@@ -221,12 +228,12 @@ void Viewer::handleSceneEvents() {
             if (e.pressed && drag_ == Drag::None && !io.WantCaptureMouse) {
                 mouse_ = e.position;
                 const int view = viewAt(mouse_);
-                if (view > kView3D) { // a section view: the cursor moves to the clicked point
-                    const ViewRect r = viewRect(view);
-                    const glm::dvec2 local = mouse_ - glm::dvec2(r.x, r.y);
-                    if (const auto voxel =
-                            sections_.voxelAtPixel(view - 1, local, r.width, r.height))
-                        setCursor(*voxel);
+                if (view > kView3D && e.button == GLFW_MOUSE_BUTTON_LEFT) {
+                    // A section view: a click moves the cursor there, a drag is window/level.
+                    drag_ = Drag::SectionPending;
+                    dragView_ = view;
+                    dragButton_ = e.button;
+                    dragStart_ = lastMouse_ = mouse_;
                 } else if (view == kView3D) {
                     beginSceneDrag(e.button, e.mods);
                 }
@@ -255,7 +262,7 @@ void Viewer::handleSceneEvents() {
                 switch (e.key) {
                 case GLFW_KEY_S:
                     if (ctrl)
-                        saveScene(options_.scenePath);
+                        saveScene(scenePathForSaving(options_.scenePath, options_.open));
                     else
                         seekMode_ = !seekMode_;
                     break;
@@ -310,7 +317,8 @@ void Viewer::handleSceneEvents() {
                     toggleManipulator();
                     break;
                 case GLFW_KEY_P:
-                    screenshot("volsg-view-" + std::to_string(++screenshotCount_) + ".png", false);
+                    screenshot(uniqueScreenshotName(std::filesystem::current_path().string()),
+                               false);
                     break;
                 case GLFW_KEY_F1:
                     options_.panels = !options_.panels;
@@ -340,6 +348,7 @@ void Viewer::handleSceneEvents() {
 
 void Viewer::beginSceneDrag(int button, int mods) {
     dragStart_ = lastMouse_ = mouse_;
+    dragView_ = kView3D;
     dragButton_ = button;
     const Ray ray = navigation_->pixelRay(mouse_);
     const bool shift = mods & GLFW_MOD_SHIFT, ctrl = mods & GLFW_MOD_CONTROL,
@@ -390,6 +399,11 @@ void Viewer::beginSceneDrag(int button, int mods) {
         } else {
             dragButton_ = -1;
         }
+    } else if (button == GLFW_MOUSE_BUTTON_RIGHT && ctrl) {
+        // Window/level (3D Slicer): horizontal = window width, vertical = level.
+        drag_ = Drag::WindowLevel;
+        dragView_ = kView3D;
+        tfEditor_.beginWindowLevel();
     } else if (button == GLFW_MOUSE_BUTTON_MIDDLE || (button == GLFW_MOUSE_BUTTON_LEFT && shift)) {
         drag_ = Drag::Pan;
     } else if (button == GLFW_MOUSE_BUTTON_RIGHT || (button == GLFW_MOUSE_BUTTON_LEFT && alt)) {
@@ -401,6 +415,16 @@ void Viewer::beginSceneDrag(int button, int mods) {
 
 void Viewer::continueSceneDrag() {
     switch (drag_) {
+    case Drag::SectionPending:
+        if (glm::length(mouse_ - dragStart_) <= kClickSlop) return;
+        drag_ = Drag::WindowLevel;
+        tfEditor_.beginWindowLevel();
+        [[fallthrough]];
+    case Drag::WindowLevel: {
+        const ViewRect r = viewRect(dragView_);
+        tfEditor_.dragWindowLevel(mouse_ - dragStart_, glm::dvec2(r.width, r.height));
+        break;
+    }
     case Drag::Pending:
         if (glm::length(mouse_ - dragStart_) <= kClickSlop) return;
         drag_ = Drag::Rotate;
@@ -432,7 +456,14 @@ void Viewer::continueSceneDrag() {
 }
 
 void Viewer::endSceneDrag() {
-    if (drag_ == Drag::Pending) { // a click: select what is under the mouse, cursor there
+    if (drag_ == Drag::SectionPending) { // a click in a section view: the cursor goes there
+        const ViewRect r = viewRect(dragView_);
+        const glm::dvec2 local = dragStart_ - glm::dvec2(r.x, r.y);
+        if (const auto voxel = sections_.voxelAtPixel(dragView_ - 1, local, r.width, r.height))
+            setCursor(*voxel);
+    } else if (drag_ == Drag::WindowLevel) {
+        tfEditor_.endWindowLevel();
+    } else if (drag_ == Drag::Pending) { // a click: select what is under the mouse, cursor there
         const Ray ray = navigation_->pixelRay(mouse_);
         const auto hit = pickScene(*root_, ray);
         select(hit ? hit->node : nullptr);
@@ -570,46 +601,6 @@ void Viewer::updateRegion() {
         RegionHistogram::of(sections_.grid(), sections_.cursor(), regionPanel_.regionSize, range);
 }
 
-void Viewer::drawViewOverlays() {
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const bool four = options_.layout == ViewLayout::Four && sections_.valid();
-    const ImU32 cross = IM_COL32(255, 220, 0, 200), label = IM_COL32(230, 230, 230, 255);
-    if (four) {
-        const glm::dvec3 cursor = sections_.worldOf(sections_.cursor());
-        for (int s = 0; s < 3; ++s) {
-            const ViewRect r = viewRect(1 + s);
-            const glm::dvec2 p = sections_.pixelOf(s, cursor, r.width, r.height);
-            const float x = float(r.x + p.x), y = float(r.y + p.y);
-            draw->PushClipRect(ImVec2(float(r.x), float(r.y)),
-                               ImVec2(float(r.x + r.width), float(r.y + r.height)), true);
-            draw->AddLine(ImVec2(float(r.x), y), ImVec2(float(r.x + r.width), y), cross);
-            draw->AddLine(ImVec2(x, float(r.y)), ImVec2(x, float(r.y + r.height)), cross);
-            const std::string text = std::string(SectionViews::name(s)) + "  slice " +
-                                     std::to_string(sections_.cursor()[s]);
-            draw->AddText(ImVec2(float(r.x + 6), float(r.y + r.height - 20)), label, text.c_str());
-            draw->PopClipRect();
-        }
-    }
-    if (cursorSet_) { // the cursor point in the 3D view
-        const ViewRect r = viewRect(kView3D);
-        const Camera& c = navigation_->camera();
-        const glm::dvec4 clip = c.projectionMatrix(navigation_->aspect()) * c.viewMatrix() *
-                                glm::dvec4(sections_.worldOf(sections_.cursor()), 1.0);
-        if (clip.w > 0.0) {
-            const ImVec2 p(float(r.x + (clip.x / clip.w + 1.0) * 0.5 * r.width),
-                           float(r.y + (1.0 - clip.y / clip.w) * 0.5 * r.height));
-            draw->AddCircle(p, 6.0f, cross, 12, 2.0f);
-        }
-    }
-    std::string mode = navigationModeName(options_.navigation);
-    if (fly_) mode += "  speed " + std::to_string(fly_->speed()).substr(0, 5);
-    if (options_.stereo.mode != StereoMode::Off)
-        mode += std::string("  stereo ") + stereoModeName(options_.stereo.mode);
-    const ViewRect r = viewRect(kView3D);
-    draw->AddText(ImVec2(float(r.x + r.width) * 0.5f - 60.0f, float(r.y + r.height - 20)), label,
-                  mode.c_str());
-}
-
 // ---- manipulators ---------------------------------------------------------------------------
 
 void Viewer::toggleManipulator() {
@@ -674,48 +665,6 @@ void Viewer::reattach(const std::vector<ref_ptr<Node>>& originals) {
 
 // ---- saving, screenshots, reloading ---------------------------------------------------------
 
-void Viewer::writeViewToSceneCamera() {
-    const auto cameras = findAll(*root_, Camera::classType());
-    if (cameras.empty()) return;
-    const SceneCamera scene = findOrMakeCamera(*root_, 1.0);
-    Camera& target = *scene.camera;
-    const Camera& view = navigation_->camera();
-    // World pose back into the camera's own coordinates (a rigid model matrix above it).
-    const glm::dmat4 toLocal = glm::inverse(scene.model);
-    const glm::dmat3 m(toLocal);
-    const glm::dquat turn = glm::quat_cast(
-        glm::dmat3(glm::normalize(m[0]), glm::normalize(m[1]), glm::normalize(m[2])));
-    target.position = glm::vec3(toLocal * glm::dvec4(glm::dvec3(view.position()), 1.0));
-    target.orientation = rotationFromQuat(turn * view.orientation().quat());
-    target.focalDistance = view.focalDistance();
-    target.nearDistance = view.nearDistance();
-    target.farDistance = view.farDistance();
-    if (auto* p = dynamic_cast<PerspectiveCamera*>(&target))
-        if (auto* v = dynamic_cast<const PerspectiveCamera*>(&view))
-            p->heightAngle = v->heightAngle();
-    if (auto* o = dynamic_cast<OrthographicCamera*>(&target))
-        if (auto* v = dynamic_cast<const OrthographicCamera*>(&view)) o->height = v->height();
-}
-
-void Viewer::saveScene(const std::string& path) {
-    std::vector<ref_ptr<Node>> originals;
-    for (Attached& a : manipulators_)
-        originals.emplace_back(a.manipulator->original());
-    detachAll(); // the file holds the plain nodes, as Inventor's manipulators leave them
-    try {
-        writeViewToSceneCamera();
-        writeSceneToFile(path, *root_);
-        status("saved " + path);
-    } catch (const Error& e) {
-        status(std::string("saving failed: ") + e.what());
-        exitStatus_ = 1;
-    }
-    reattach(originals);
-    std::error_code ec;
-    if (std::filesystem::equivalent(path, options_.scenePath, ec))
-        sceneTime_ = std::filesystem::last_write_time(options_.scenePath, ec);
-}
-
 void Viewer::screenshot(const std::string& path, bool sceneOnly) {
     const glm::ivec2 size = window_->size();
     Image image;
@@ -760,7 +709,9 @@ void Viewer::screenshot(const std::string& path, bool sceneOnly) {
     }
     try {
         writePng(path, image);
-        status("screenshot " + path);
+        std::error_code ec;
+        const auto where = std::filesystem::absolute(path, ec);
+        status("screenshot saved to " + (ec ? path : where.string()));
     } catch (const Error& e) {
         status(std::string("screenshot failed: ") + e.what());
         exitStatus_ = 1;
@@ -776,9 +727,10 @@ void Viewer::checkReload() {
     if (ec || time == sceneTime_) return;
     sceneTime_ = time;
     try {
-        ref_ptr<Node> fresh = readSceneOrVoxelFile(options_.scenePath);
+        ref_ptr<Node> fresh = readSceneForFile(options_.scenePath, options_.open);
         detachAll();
         root_ = fresh;
+        takeSceneText();
         loadScene();
         status("reloaded " + options_.scenePath);
     } catch (const Error& e) {
@@ -865,18 +817,10 @@ void Viewer::runScriptStep() {
             break;
         }
         case K::Panel:
-            if (s.text == "tf")
-                showTf_ = true;
-            else if (s.text == "planeOpacity")
-                showPlane_ = true;
-            else if (s.text == "material")
-                showMaterial_ = true;
-            else if (s.text == "fields")
-                showFields_ = true;
-            else if (s.text == "region")
-                showRegion_ = true;
-            else
+            if (s.text != "tf" && s.text != "planeOpacity" && s.text != "material" &&
+                s.text != "fields" && s.text != "region")
                 throw Error("unknown panel '" + s.text + "'");
+            revealPanel_ = s.text;
             options_.panels = true;
             break;
         case K::Layout:
@@ -897,6 +841,27 @@ void Viewer::runScriptStep() {
             regionPanel_.regionSize = s.voxel.x;
             updateRegion();
             break;
+        case K::View:
+            setAnatomicalView(*parseAnatomicalView(s.text));
+            break;
+        case K::Sections:
+            sections_.setFlipped(s.text == "neurological");
+            break;
+        case K::Axes:
+            setPatientAxes(PatientAxes{glm::dvec3(s.voxel)});
+            break;
+        case K::Hounsfield:
+            tfEditor_.setHounsfieldZero(s.scroll);
+            break;
+        case K::Preset: {
+            const TransferFunctionPreset* preset = nullptr;
+            for (const TransferFunctionPreset& p : transferFunctionPresets())
+                if (p.name == s.text) preset = &p;
+            if (!preset) throw Error("no transfer-function preset named '" + s.text + "'");
+            if (!tfEditor_.selected()) throw Error("the scene has no TransferFunction");
+            tfEditor_.applyPreset(*preset, PresetApply(s.frames));
+            break;
+        }
         case K::SeriesStep:
         case K::SeriesPlay:
         case K::SeriesPause:
@@ -917,27 +882,21 @@ void Viewer::runScriptStep() {
     }
 }
 
+WindowLayout Viewer::layout() const {
+    const bool four = options_.layout == ViewLayout::Four && sections_.valid();
+    return layoutWindow(window_->size(), options_.panels,
+                        four ? ViewLayout::Four : ViewLayout::Single);
+}
+
 Viewer::ViewRect Viewer::viewRect(int view) const {
-    const glm::ivec2 size = glm::max(window_->size(), glm::ivec2(1));
-    if (options_.layout == ViewLayout::Single) return {0, 0, size.x, size.y};
-    // 2x2, all four the same size: 3D | axial over coronal | sagittal.
-    const int w = std::max(size.x / 2, 1), h = std::max(size.y / 2, 1);
-    switch (view) {
-    case 1 + SectionViews::Axial:
-        return {w, 0, w, h};
-    case 1 + SectionViews::Coronal:
-        return {0, h, w, h};
-    case 1 + SectionViews::Sagittal:
-        return {w, h, w, h};
-    default:
-        return {0, 0, w, h};
-    }
+    const WindowLayout l = layout();
+    return view >= 0 && view < l.viewCount ? l.views[std::size_t(view)] : l.views[0];
 }
 
 int Viewer::viewAt(const glm::dvec2& pixel) const {
-    const int views = options_.layout == ViewLayout::Four && sections_.valid() ? 4 : 1;
-    for (int v = 0; v < views; ++v)
-        if (viewRect(v).contains(pixel)) return v;
+    const WindowLayout l = layout();
+    for (int v = 0; v < l.viewCount; ++v)
+        if (l.views[std::size_t(v)].contains(pixel)) return v;
     return -1;
 }
 
@@ -959,7 +918,7 @@ void Viewer::drawImageIntoRect(const Image& image, const ViewRect& rect) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void Viewer::renderIntoRect(Node& root, RenderOptions o, const ViewRect& rect, bool antialias,
+void Viewer::renderIntoRect(Node& root, RenderOptions o, const ViewRect& rect, double scale,
                             bool stereo) {
     o.width = rect.width;
     o.height = rect.height;
@@ -969,16 +928,17 @@ void Viewer::renderIntoRect(Node& root, RenderOptions o, const ViewRect& rect, b
     }
     const glm::ivec2 windowSize = window_->size();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!antialias && rect.x == 0 && rect.y == 0 && rect.width == windowSize.x &&
+    if (scale == 1.0 && rect.x == 0 && rect.y == 0 && rect.width == windowSize.x &&
         rect.height == windowSize.y) {
         renderer_->renderToBoundFramebuffer(root, o);
         return;
     }
     // Off the window first: into a double-size target for 2x2 supersampling (the renderer
     // draws into a single-sample float target, so the window's own multisampling would not
-    // help), or just into the view's own rectangle.
-    const int scale = antialias ? 2 : 1;
-    const glm::ivec2 size(scale * rect.width, scale * rect.height);
+    // help), a smaller one for a coarse frame (scaled up with linear filtering), or just into
+    // the view's own rectangle.
+    const glm::ivec2 size = glm::max(
+        glm::ivec2(glm::round(scale * glm::dvec2(rect.width, rect.height))), glm::ivec2(1));
     if (size != viewTargetSize_) {
         viewColor_ = Renderbuffer(GL_RGBA8, size.x, size.y);
         viewTarget_ = Framebuffer::create();
@@ -1003,11 +963,22 @@ void Viewer::renderViews() {
     RenderOptions o;
     o.background = options_.background;
     o.interactive = isInteracting();
-    o.interactivePlaneScale = quality_.scale();
+    o.interactivePlaneScale = quality_.planeScale();
     o.camera = navigation_->cameraPtr();
+    // The 3D view's resolution: a quarter of it (and the interactive planes) for the first
+    // image of a scene, the interactive rule's while the user drags, else full (or twice,
+    // supersampled).
+    double resolution = options_.antialias == Antialias::Supersample ? 2.0 : 1.0;
+    if (refineStage_ == 0) {
+        resolution = kFirstImageResolution;
+        o.interactive = true;
+        o.interactivePlaneScale = 1.0;
+    } else if (o.interactive) {
+        resolution = quality_.resolutionScale();
+    }
     const bool four = options_.layout == ViewLayout::Four && sections_.valid();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (four) { // the seams between the views
+    { // under the panel column (and the seams between views, if any): nothing stale shows
         const glm::ivec2 size = window_->size();
         glViewport(0, 0, size.x, size.y);
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
@@ -1019,14 +990,13 @@ void Viewer::renderViews() {
     try {
         RenderOptions view3D = o;
         if (options_.antialias == Antialias::Multisample) view3D.samples = 4;
-        renderIntoRect(*root_, view3D, viewRect(kView3D),
-                       options_.antialias == Antialias::Supersample, true);
+        renderIntoRect(*root_, view3D, viewRect(kView3D), resolution, true);
         if (four)
             for (int s = 0; s < 3; ++s) {
                 const ViewRect r = viewRect(1 + s);
                 RenderOptions section = o;
                 section.camera = sections_.camera(s, double(r.width) / double(r.height));
-                renderIntoRect(sections_.graph(s), section, r, false, false);
+                renderIntoRect(sections_.graph(s), section, r, 1.0, false);
             }
     } catch (...) {
         renderer_->endViewGroup();
@@ -1037,7 +1007,12 @@ void Viewer::renderViews() {
 
 void Viewer::frame() {
     const auto start = std::chrono::steady_clock::now();
-    GlfwWindow::pollEvents();
+    // Nothing to draw and no script to play: wait for input (or the reload check) rather than
+    // spin.
+    if (idle_ && scriptNext_ >= script_.size() && scriptWait_ == 0)
+        glfwWaitEventsTimeout(0.1);
+    else
+        GlfwWindow::pollEvents();
     const bool scripted = scriptNext_ < script_.size() || scriptWait_ > 0;
     const ScriptStep* step = scripted && scriptWait_ == 0 ? &script_[scriptNext_] : nullptr;
     runScriptStep();
@@ -1069,32 +1044,69 @@ void Viewer::frame() {
     events_.clear();
     seriesPanel_.update(glfwGetTime());
     followSceneEdits();
+    // Engines, field connections and animated nodes (Rotor, Blinker, ...) run on the viewer's
+    // clock; a field they change redraws the views (the frame's signature sees its version).
+    engines_.evaluate(
+        *root_,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - startTime_).count());
+    tfPanel_.deferHistogram = refineStage_ == 0; // the first image before the histogram
     if (options_.panels) drawPanels();
+    progressText_ = refineStage_ == 0 ? "first image at a quarter of the resolution: refining..."
+                                      : std::string();
     drawViewOverlays();
     stepNavigation();
     syncManipulators();
     navigation_->adjustClipping(sceneBox());
     ImGui::Render();
 
-    const auto renderStart = std::chrono::steady_clock::now();
-    try {
-        renderViews();
-    } catch (const Error& e) {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glClearColor(0.3f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        if (statusText_ != e.what()) status(e.what());
+    // A still frame that would show exactly what the last one showed is not drawn again: the
+    // views are copied back from the last one (ViewerRedraw.cpp), so the viewer answers input
+    // at once instead of redrawing a slow full-quality image every frame.
+    const ViewSignature signature = viewSignature();
+    idle_ = refineStage_ >= 2 && !isInteracting() && lastShown_ && *lastShown_ == signature &&
+            restoreViews();
+    ++framesTotal_;
+    if (!idle_) {
+        ++framesDrawn_;
+        const auto renderStart = std::chrono::steady_clock::now();
+        lastShown_.reset();
+        try {
+            renderViews();
+            // Only a full still image is kept (a coarse or interactive one is redrawn).
+            if (refineStage_ >= 1 && !isInteracting()) {
+                keepViews();
+                lastShown_ = signature;
+            }
+        } catch (const Error& e) {
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glClearColor(0.3f, 0.0f, 0.0f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            if (statusText_ != e.what()) status(e.what());
+        }
+        glFinish(); // llvmpipe draws on demand: the render time is measured when it is done
+        lastRenderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                                  renderStart)
+                            .count();
     }
-    glFinish(); // llvmpipe draws on demand: the render time is measured when it is done
-    lastRenderMs_ =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - renderStart)
-            .count();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
     if (step && step->kind == ScriptStep::Kind::Screenshot) screenshot(step->text, step->sceneOnly);
     if (step && step->kind == ScriptStep::Kind::Save) saveScene(step->text);
     if (step && step->kind == ScriptStep::Kind::Quit) quit_ = true;
     window_->swapBuffers();
+    if (refineStage_ < 2) { // how long the first image and the full one took to show
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - startTime_)
+                .count();
+        // And the processor time the process used (all threads): on a machine shared with
+        // other work, the wall time overstates what an idle one takes.
+        const double cpuMs = 1000.0 * double(std::clock()) / CLOCKS_PER_SEC;
+        char text[128];
+        std::snprintf(text, sizeof text, "%s image after %.0f ms (processor time %.0f ms)",
+                      refineStage_ == 0 ? "first (coarse)" : "full", ms, cpuMs);
+        status(text);
+        ++refineStage_;
+    }
 
     lastFrameMs_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -1104,156 +1116,9 @@ void Viewer::frame() {
 int Viewer::run() {
     while (!quit_ && !window_->shouldClose())
         frame();
+    status(std::to_string(framesTotal_) + " frames, " + std::to_string(framesDrawn_) +
+           " drawn (the others showed the last still image again)");
     return exitStatus_;
-}
-
-// ---- panels ---------------------------------------------------------------------------------
-
-void Viewer::drawSceneTree(Node& node, int depth) {
-    Node* original = originalOf(&node);
-    std::string label = std::string(node.type().name());
-    if (!original->getName().empty()) label += " " + original->getName();
-    label += "##" + std::to_string(reinterpret_cast<std::uintptr_t>(&node)) + "_" +
-             std::to_string(depth);
-    auto* children = node.children();
-    ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth;
-    if (!children || children->empty())
-        flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
-    if (depth < 2) flags |= ImGuiTreeNodeFlags_DefaultOpen;
-    if (selected_.get() == original) flags |= ImGuiTreeNodeFlags_Selected;
-    const bool open = ImGui::TreeNodeEx(label.c_str(), flags);
-    if (ImGui::IsItemClicked()) select(original);
-    if (open && children && !children->empty()) {
-        if (depth < 32)
-            for (const auto& child : *children)
-                if (child) drawSceneTree(*child, depth + 1);
-        ImGui::TreePop();
-    }
-}
-
-void Viewer::drawPanels() {
-    const ImGuiIO& io = ImGui::GetIO();
-    const float w = io.DisplaySize.x, h = io.DisplaySize.y;
-    // Side columns, narrower in small windows so that the middle still shows the scene.
-    const float left = std::min(330.0f, 0.28f * w), right = std::min(400.0f, 0.34f * w);
-    const float tfHeight = std::min(330.0f, 0.62f * h), planeHeight = std::min(190.0f, 0.38f * h);
-
-    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(left, h * 0.45f), ImGuiCond_FirstUseEver);
-    ImGui::Begin("Scene");
-    ImGui::Text("%.1f fps  frame %.0f ms  render %.0f ms",
-                lastFrameMs_ > 0 ? 1000.0 / lastFrameMs_ : 0.0, lastFrameMs_, lastRenderMs_);
-    ImGui::Text("%s  planes x%.3g  %s%s", isInteracting() ? "interactive" : "still",
-                quality_.scale(), navigation_->isOrthographic() ? "ortho" : "perspective",
-                options_.antialias == Antialias::Multisample   ? "  AA msaa 4x"
-                : options_.antialias == Antialias::Supersample ? "  AA 2x2"
-                                                               : "");
-    if (ImGui::Button("view all")) navigation_->viewAll(sceneBox());
-    ImGui::SameLine();
-    if (ImGui::Button("home")) navigation_->goHome();
-    ImGui::SameLine();
-    if (ImGui::Button(navigation_->isOrthographic() ? "perspective" : "ortho"))
-        navigation_->toggleProjection();
-    ImGui::SameLine();
-    int aa = int(options_.antialias);
-    ImGui::SetNextItemWidth(90.0f);
-    if (ImGui::Combo("AA", &aa,
-                     "off\0msaa 4x\0"
-                     "2x2\0"))
-        options_.antialias = Antialias(aa);
-    if (ImGui::Button(seekMode_ ? "seek: click a point" : "seek")) seekMode_ = !seekMode_;
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!history_.canUndo());
-    if (ImGui::Button("undo")) history_.undo();
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!history_.canRedo());
-    if (ImGui::Button("redo")) history_.redo();
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (ImGui::Button("save")) saveScene(options_.scenePath);
-    const bool manipulable =
-        selected_ &&
-        (selected_->isA<ClipPlane>() || selected_->isA<BoxClip>() || selected_->isA<Transform>());
-    ImGui::BeginDisabled(!manipulable);
-    bool attached = false;
-    for (const Attached& a : manipulators_)
-        attached |= a.manipulator->original() == selected_.get();
-    if (ImGui::Button(attached ? "remove manipulator (m)" : "manipulate (m)")) toggleManipulator();
-    ImGui::EndDisabled();
-    drawViewControls();
-    if (!statusText_.empty()) ImGui::TextWrapped("%s", statusText_.c_str());
-    ImGui::Separator();
-    drawSceneTree(*root_, 0);
-    ImGui::End();
-
-    if (showFields_) {
-        ImGui::SetNextWindowPos(ImVec2(0, h * 0.45f), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(left, h * 0.55f), ImGuiCond_FirstUseEver);
-        ImGui::Begin("Fields", &showFields_);
-        drawFieldPanel(fieldPanel_, fieldPanelState_);
-        ImGui::End();
-    }
-    if (showTf_) {
-        ImGui::SetNextWindowPos(ImVec2(w - right, 0), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(right, tfHeight), ImGuiCond_FirstUseEver);
-        ImGui::Begin("Transfer function", &showTf_);
-        drawTransferFunctionPanel(tfEditor_, tfPanel_);
-        canvases_["tf"] = {glm::vec2(tfPanel_.canvas.rectMin.x, tfPanel_.canvas.rectMin.y),
-                           glm::vec2(tfPanel_.canvas.rectMax.x, tfPanel_.canvas.rectMax.y)};
-        ImGui::End();
-    } else {
-        canvases_.erase("tf");
-    }
-    if (showPlane_) {
-        ImGui::SetNextWindowPos(ImVec2(w - right, tfHeight), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(right, planeHeight), ImGuiCond_FirstUseEver);
-        ImGui::Begin("Plane opacity", &showPlane_);
-        drawPlaneOpacityPanel(planeEditor_, planePanel_);
-        canvases_["planeOpacity"] = {glm::vec2(planePanel_.rectMin.x, planePanel_.rectMin.y),
-                                     glm::vec2(planePanel_.rectMax.x, planePanel_.rectMax.y)};
-        ImGui::End();
-    } else {
-        canvases_.erase("planeOpacity");
-    }
-    if (seriesPanel_.active()) { // the time series' player, under the Scene panel
-        ImGui::SetNextWindowPos(ImVec2(0, h * 0.45f), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(left, 150.0f), ImGuiCond_FirstUseEver);
-        seriesPanel_.draw(glfwGetTime());
-    }
-    if (showMaterial_) {
-        const float top = tfHeight + planeHeight;
-        ImGui::SetNextWindowPos(ImVec2(w - right, top), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(right, std::max(h - top, 120.0f)), ImGuiCond_FirstUseEver);
-        ImGui::Begin("Material", &showMaterial_);
-        drawMaterialPanel(materialEditor_);
-        ImGui::End();
-    }
-    if (showRegion_) {
-        ImGui::SetNextWindowPos(ImVec2(left, h - 200.0f), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(std::min(320.0f, w - left - right), 200.0f),
-                                 ImGuiCond_FirstUseEver);
-        ImGui::Begin("Cursor", &showRegion_);
-        if (drawRegionHistogramPanel(region_, regionPanel_)) updateRegion();
-        ImGui::End();
-    }
-}
-
-void Viewer::drawViewControls() {
-    int layout = int(options_.layout);
-    if (ImGui::Combo("layout (l)", &layout, "single view\0four views\0"))
-        setLayout(ViewLayout(layout));
-    int navigation = int(options_.navigation);
-    if (ImGui::Combo("navigation (e f w)", &navigation, "examiner\0fly\0walk\0"))
-        setNavigationMode(NavigationMode(navigation));
-    int stereo = int(options_.stereo.mode);
-    if (ImGui::Combo("stereo (t)", &stereo, "off\0red-cyan anaglyph\0side by side\0"))
-        options_.stereo.mode = StereoMode(stereo);
-    if (options_.stereo.mode != StereoMode::Off) {
-        float fraction = float(options_.stereo.separationFraction);
-        if (ImGui::SliderFloat("eye separation", &fraction, 0.005f, 0.2f, "%.3f x focal"))
-            options_.stereo.separationFraction = double(fraction);
-    }
 }
 
 } // namespace volsg

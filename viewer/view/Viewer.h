@@ -23,6 +23,7 @@
 #include <volsg/editors/panels/FieldPanel.h>
 #include <volsg/editors/panels/RegionHistogramPanel.h>
 #include <volsg/editors/panels/TransferFunctionPanel.h>
+#include <volsg/engines/Evaluator.h>
 #include <volsg/gl/Framebuffer.h>
 #include <volsg/gl/Renderbuffer.h>
 #include <volsg/gl/Texture.h>
@@ -32,20 +33,31 @@
 #include <volsg/manipulators/WalkNavigation.h>
 #include <volsg/math/Box3.h>
 #include <volsg/render/StereoRenderer.h>
+#include <volsg/volumescene/SceneForFile.h>
 
 #include "InteractiveQuality.h"
+#include "PatientOrientation.h"
+#include "SceneTextSave.h"
 #include "SectionViews.h"
 #include "SeriesPanel.h"
 #include "ViewModes.h"
 #include "ViewerScript.h"
+#include "WindowLayout.h"
+
+struct ImDrawList;
 
 namespace volsg {
 
 class GlfwWindow;
 class Renderer;
 
+/// `volsg-view-N.png` in `folder` with N the first number whose file does not exist: a
+/// screenshot never overwrites one.
+std::string uniqueScreenshotName(const std::string& folder);
+
 struct ViewerOptions {
-    std::string scenePath;
+    std::string scenePath;  ///< a scene file, or any data file volsg opens (SceneForFile.h)
+    OpenFileOptions open;   ///< what a raw data file cannot say about itself
     std::string scriptPath; ///< empty: interactive only
     int width = 1280, height = 800;
     glm::vec3 background{0.1f, 0.1f, 0.12f};
@@ -74,14 +86,20 @@ public:
     void onKey(int key, int mods);
 
 private:
-    enum class Drag { None, Pending, Rotate, Pan, Dolly, Manipulator, ActiveObject, Walk, Tilt };
-    /// A view's place in the window: pixels, origin top-left.
-    struct ViewRect {
-        int x = 0, y = 0, width = 1, height = 1;
-        bool contains(const glm::dvec2& p) const {
-            return p.x >= x && p.y >= y && p.x < x + width && p.y < y + height;
-        }
+    enum class Drag {
+        None,
+        Pending,
+        Rotate,
+        Pan,
+        Dolly,
+        Manipulator,
+        ActiveObject,
+        Walk,
+        Tilt,
+        SectionPending, ///< pressed in a section view: a click (cursor) or window/level
+        WindowLevel,
     };
+    using ViewRect = PixelRect;       ///< a view's place in the window (WindowLayout)
     static constexpr int kView3D = 0; ///< views: 0 the 3D view, 1 + SectionViews::Section
     struct Attached {
         ref_ptr<Node> node; ///< the manipulator
@@ -97,6 +115,10 @@ private:
     };
 
     void loadScene();
+    /// One frame with `message` in the middle of the window (before the scene can be drawn).
+    void showMessageFrame(const std::string& message);
+    /// "loading FILE (N MB)..." for the scene's volume files.
+    std::string loadingMessage() const;
     void setupCamera();
     void frame();
     void runScriptStep();
@@ -110,16 +132,50 @@ private:
     void detachAll();
     void reattach(const std::vector<ref_ptr<Node>>& originals);
     void syncManipulators();
+    /// Where the panel column and the views are this frame (WindowLayout).
+    WindowLayout layout() const;
     ViewRect viewRect(int view) const;
     int viewAt(const glm::dvec2& pixel) const; ///< -1 outside every view
     void renderViews();
-    /// Renders `root` seen by options.camera into `rect` of the window (supersampled when
-    /// `antialias`, else as options.samples says); the 3D view goes through the stereo renderer
-    /// when stereo is on.
-    void renderIntoRect(Node& root, RenderOptions options, const ViewRect& rect, bool antialias,
+    /// What the views show: when it is the same as for the last still frame, the views are
+    /// not drawn again (ViewerRedraw.cpp).
+    struct ViewSignature {
+        std::uint64_t newestNode = 0; ///< the largest node version in the scene (edits raise it)
+        std::size_t nodes = 0;
+        glm::ivec2 window{0};
+        WindowLayout layout;
+        std::vector<float> camera; ///< the 3D camera's fields
+        glm::ivec3 cursor{0};
+        bool cursorShown = false, flipped = false;
+        glm::dvec3 patientSigns{1.0};
+        int antialias = 0, stereo = 0;
+        double eyeSeparation = 0.0;
+        glm::vec3 background{0.0f};
+        bool alwaysDraw = false; ///< never equal: something changes without an edit
+        bool operator==(const ViewSignature&) const;
+    };
+    ViewSignature viewSignature() const;
+    /// Copies the window's freshly drawn views aside, or back into the window (false when there
+    /// is nothing of this size to copy back).
+    void keepViews();
+    bool restoreViews();
+    /// Renders `root` seen by options.camera into `rect` of the window at `scale` times its size
+    /// (2: 2x2 supersampling; below 1: a coarse frame scaled up), multisampled as
+    /// options.samples says; the 3D view goes through the stereo renderer when stereo is on.
+    void renderIntoRect(Node& root, RenderOptions options, const ViewRect& rect, double scale,
                         bool stereo);
     void drawImageIntoRect(const Image& image, const ViewRect& rect);
     void drawViewOverlays();
+    void drawAxesMarker(ImDrawList* draw, const ViewRect& view);
+    void drawScaleBar(ImDrawList* draw, const ViewRect& view);
+    /// The 3D view's world units per pixel at the camera's focal distance.
+    double worldUnitsPerPixel() const;
+    /// A patient direction (RAS) in world coordinates: through the patient axes and the first
+    /// volume's model matrix.
+    glm::dvec3 patientDirectionInWorld(const glm::dvec3& ras) const;
+    /// The 3D camera looks at the scene from that side of the patient (view all).
+    void setAnatomicalView(AnatomicalView view);
+    void setPatientAxes(const PatientAxes& axes);
     void setLayout(ViewLayout layout);
     void setNavigationMode(NavigationMode mode);
     void stepNavigation();
@@ -129,10 +185,20 @@ private:
     void setCursorFromPick(const Ray& ray);
     void updateRegion();
     void drawPanels();
+    /// A collapsible section of the panel column; opens (and scrolls to) it when the script
+    /// asked for `scriptName`. Returns whether it is open.
+    bool panelSection(const char* title, bool& open, const char* scriptName);
+    void drawScenePanel();
     void drawViewControls();
+    void drawOrientationControls();
     void drawSceneTree(Node& node, int depth);
+    /// Saves to `path` (the scene's own file, or another: Save As, after which saves go there):
+    /// only the changed parts of the file's text are rewritten (SceneTextSave.h), else the
+    /// whole scene; the view goes into the scene's first camera, or a new one.
     void saveScene(const std::string& path);
     void writeViewToSceneCamera();
+    /// The snapshot of the scene file's text, taken when it is read (and after each save).
+    void takeSceneText();
     void screenshot(const std::string& path, bool sceneOnly);
     void checkReload();
     Box3 sceneBox();
@@ -143,6 +209,8 @@ private:
     std::unique_ptr<GlfwWindow> window_;
     std::unique_ptr<Renderer> renderer_;
     ref_ptr<Node> root_;
+    ConnectionEvaluator
+        engines_; ///< engines, connections and animated nodes, on the viewer's clock
     std::filesystem::file_time_type sceneTime_{};
     std::chrono::steady_clock::time_point lastReloadCheck_{};
 
@@ -170,6 +238,7 @@ private:
     ref_ptr<Node> selected_;
     Drag drag_ = Drag::None;
     int dragButton_ = -1;
+    int dragView_ = 0; ///< the view the drag started in
     Manipulator* draggedManipulator_ = nullptr;
     glm::dvec2 mouse_{0.0}, dragStart_{0.0}, lastMouse_{0.0};
     bool buttons_[3] = {false, false, false};
@@ -185,6 +254,12 @@ private:
     bool quit_ = false;
     int exitStatus_ = 0;
 
+    std::optional<ViewSignature> lastShown_; ///< of the still frame in keptViews_
+    bool idle_ = false;                      ///< the last frame drew nothing new
+    long long framesTotal_ = 0, framesDrawn_ = 0;
+    Framebuffer keptViews_; ///< the window's views as last drawn still
+    Renderbuffer keptViewsColor_;
+    glm::ivec2 keptViewsSize_{0};
     Framebuffer viewTarget_; ///< a view drawn off the window, then copied into its rectangle
     Renderbuffer viewColor_;
     glm::ivec2 viewTargetSize_{0};
@@ -193,10 +268,21 @@ private:
     double lastFrameMs_ = 0.0;
     double lastRenderMs_ = 0.0;
     std::string statusText_;
+    std::string progressText_; ///< shown in the 3D view while loading or refining
+    /// The first image of a scene is drawn at this fraction of the 3D view's width and height
+    /// (with the volumes' interactive planes), the next one in full.
+    static constexpr double kFirstImageResolution = 0.25;
+    int refineStage_ = 0; ///< frames since the scene was loaded, up to 2
+    std::chrono::steady_clock::time_point startTime_;
+    PatientAxes patientAxes_; ///< how the first volume's axes run in patient coordinates
     std::map<std::string, std::pair<glm::vec2, glm::vec2>> canvases_; ///< scripted UI places
-    bool showTf_ = true, showPlane_ = true, showMaterial_ = true, showFields_ = true,
-         showRegion_ = true;
-    int screenshotCount_ = 0;
+    /// Which sections of the panel column are open; `revealPanel_` names one the script opened
+    /// (it is opened and scrolled into view on the next frame).
+    bool showScene_ = true, showTf_ = true, showPlane_ = false, showMaterial_ = false,
+         showFields_ = false, showRegion_ = false;
+    std::string revealPanel_;
+    std::optional<SceneTextSnapshot> sceneText_;
+    char saveAsPath_[512] = "";
 };
 
 } // namespace volsg

@@ -1,6 +1,9 @@
 #include "ViewerScript.h"
 
+#include "PatientOrientation.h"
+
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -250,6 +253,51 @@ std::vector<ScriptStep> parseViewerScript(const std::string& text, const std::st
                 if (!(s.separation > 0.0 && s.separation <= 1.0))
                     r.fail("the eye separation is a fraction of the focal distance in (0, 1]");
             }
+            r.end();
+            steps.push_back(s);
+        } else if (command == "view") {
+            s.kind = K::View;
+            s.text = r.word("a view name");
+            if (!parseAnatomicalView(s.text))
+                r.fail("unknown view '" + s.text +
+                       "' (anterior, posterior, left, right, superior, inferior)");
+            r.end();
+            steps.push_back(s);
+        } else if (command == "sections") {
+            s.kind = K::Sections;
+            s.text = r.word("radiological or neurological");
+            if (s.text != "radiological" && s.text != "neurological")
+                r.fail("sections are 'radiological' or 'neurological'");
+            r.end();
+            steps.push_back(s);
+        } else if (command == "axes") {
+            s.kind = K::Axes;
+            for (int a = 0; a < 3; ++a) {
+                const std::string sign = r.word("+ or -");
+                if (sign != "+" && sign != "-") r.fail("each axis is + or -");
+                s.voxel[a] = sign == "+" ? 1 : -1;
+            }
+            r.end();
+            steps.push_back(s);
+        } else if (command == "preset") {
+            s.kind = K::Preset;
+            const std::string apply = r.word("colour, opacity or both");
+            if (apply == "colour")
+                s.frames = 0;
+            else if (apply == "opacity")
+                s.frames = 1;
+            else if (apply == "both")
+                s.frames = 2;
+            else
+                r.fail("a preset sets 'colour', 'opacity' or 'both'");
+            s.text = r.word("a preset name");
+            while (r.more())
+                s.text += " " + r.word("a preset name");
+            steps.push_back(s);
+        } else if (command == "hounsfield") {
+            s.kind = K::Hounsfield;
+            s.scroll = r.number("the data value of 0 HU");
+            if (!std::isfinite(s.scroll)) r.fail("the data value of 0 HU must be finite");
             r.end();
             steps.push_back(s);
         } else if (command == "cursor") {

@@ -20,6 +20,12 @@
 //   navigation examiner|fly|walk    the navigation mode of the 3D view
 //   stereo off|anaglyph|side-by-side [FRACTION]   stereo, with the eye separation as a
 //                                   fraction of the camera's focalDistance
+//   view anterior|posterior|left|right|superior|inferior   the 3D view from that side
+//   sections radiological|neurological   the section views' convention (neurological: flipped)
+//   axes SX SY SZ                   how the volume's axes run in patient coordinates: + or -
+//                                   each (- reversed; PatientOrientation.h)
+//   preset colour|opacity|both NAME the named transfer-function preset (NAME may have spaces)
+//   hounsfield VALUE                the data value of 0 HU for CT presets (1024: unsigned CT)
 //   cursor I J K                    the 3D cursor on voxel (I, J, K) of the first volume
 //   region K                        the readout's histogram region: K^3 voxels
 //   screenshot FILE [scene]         the window with its panels; `scene`: the scene alone
@@ -64,6 +70,11 @@ struct ScriptStep {
         Stereo,
         Cursor,
         Region,
+        View,
+        Sections,
+        Axes,
+        Preset,
+        Hounsfield,
         Screenshot,
         Save,
         SeriesStep,

@@ -139,6 +139,12 @@ void Renderer::setMaxRayOpacity(double threshold) {
 }
 
 Image Renderer::render(const Camera& camera, int width, int height) {
+    Image image;
+    render(camera, width, height, image);
+    return image;
+}
+
+void Renderer::render(const Camera& camera, int width, int height, Image& image) {
     if (width < 1 || height < 1) throw Error("VolPack image size must be at least 1x1");
     const double aspect = double(width) / double(height);
     const glm::dmat4 projection = camera.projectionMatrix(aspect);
@@ -185,12 +191,14 @@ Image Renderer::render(const Camera& camera, int width, int height) {
     check(vpRenderClassifiedVolume(vpc_), "render");
 
     // VolPack's row 0 is window y = 0, the bottom; the Image's row 0 is the top.
-    Image image(width, height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    if (image.width != width || image.height != height)
+        image = Image(width, height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     for (int y = 0; y < height; ++y) {
         const unsigned char* row = pixels_.data() + std::size_t(height - 1 - y) *
                                                         std::size_t(width) * std::size_t(channels_);
         for (int x = 0; x < width; ++x) {
             glm::vec4& p = image.at(x, y);
+            p.a = 1.0f;
             if (channels_ == 1)
                 p.r = p.g = p.b = float(row[x]) / 255.0f;
             else
@@ -198,7 +206,6 @@ Image Renderer::render(const Camera& camera, int width, int height) {
                     p[c] = float(row[3 * x + c]) / 255.0f;
         }
     }
-    return image;
 }
 
 } // namespace volsg::volpack

@@ -73,6 +73,8 @@ public:
     /// linear values (8-bit levels / 255), row 0 at the top, alpha = VolPack's pixel opacity.
     /// Throws Error for a perspective camera or a VolPack error.
     Image render(const Camera& camera, int width, int height);
+    /// The same into `into` (its storage reused when it has the size already).
+    void render(const Camera& camera, int width, int height, Image& into);
 
     /// Voxels kept in VolPack's classified volume (opacity >= 1/255 after rounding).
     std::size_t classifiedVoxels() const { return classifiedVoxels_; }

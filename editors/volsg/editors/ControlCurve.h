@@ -18,7 +18,8 @@ public:
     const std::vector<glm::vec2>& points() const { return points_; }
     float yMin() const { return yMin_; }
     float yMax() const { return yMax_; }
-    /// The curve at x: linear between points, constant beyond the end points (docs/SCENE-FORMAT.md 3).
+    /// The curve at x: linear between points, constant beyond the end points (docs/SCENE-FORMAT.md
+    /// 3).
     float valueAt(float x) const;
 
     /// Adds a point (clamped into the range); a point within minimumGap in x is replaced.

@@ -1,9 +1,13 @@
 #include <volsg/editors/TransferFunctionEditor.h>
 
+#include <cmath>
+
 #include <volsg/actions/SearchAction.h>
 #include <volsg/editors/EditHistory.h>
 #include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/VolumeData.h>
+#include <volsg/volume/TransferFunction1D.h>
+#include <volsg/volume/VolumeGrid.h>
 
 namespace volsg {
 
@@ -11,23 +15,6 @@ namespace {
 const int channelBits[4] = {TransferFunctionEditor::Red, TransferFunctionEditor::Green,
                             TransferFunctionEditor::Blue, TransferFunctionEditor::Alpha};
 } // namespace
-
-const char* TransferFunctionEditor::presetName(Preset preset) {
-    switch (preset) {
-    case GreyRamp:
-        return "grey ramp";
-    case HotMetal:
-        return "hot metal";
-    case CoolWarm:
-        return "cool to warm";
-    case AlphaTent:
-        return "alpha tent";
-    case AlphaStep:
-        return "alpha step";
-    default:
-        return "?";
-    }
-}
 
 const char* TransferFunctionEditor::channelName(int bit) {
     switch (bit) {
@@ -44,32 +31,6 @@ const char* TransferFunctionEditor::channelName(int bit) {
     }
 }
 
-std::vector<glm::vec2> TransferFunctionEditor::presetChannel(Preset preset, int bit) {
-    using P = std::vector<glm::vec2>;
-    switch (preset) {
-    case GreyRamp:
-        return P{{0, 0}, {1, 1}};
-    case HotMetal:
-        if (bit == Red) return P{{0, 0}, {0.4f, 1}, {1, 1}};
-        if (bit == Green) return P{{0, 0}, {0.3f, 0}, {0.8f, 1}, {1, 1}};
-        if (bit == Blue) return P{{0, 0}, {0.6f, 0}, {1, 1}};
-        return P{{0, 0}, {1, 1}};
-    case CoolWarm:
-        if (bit == Red) return P{{0, 0.23f}, {0.5f, 0.87f}, {1, 0.71f}};
-        if (bit == Green) return P{{0, 0.3f}, {0.5f, 0.86f}, {1, 0.02f}};
-        if (bit == Blue) return P{{0, 0.75f}, {0.5f, 0.86f}, {1, 0.15f}};
-        return P{{0, 0}, {1, 1}};
-    case AlphaTent:
-        if (bit == Alpha) return P{{0, 0}, {0.3f, 0}, {0.5f, 0.8f}, {0.7f, 0}, {1, 0}};
-        return P{{0, 0}, {1, 1}};
-    case AlphaStep:
-        if (bit == Alpha) return P{{0, 0}, {0.49f, 0}, {0.51f, 1}, {1, 1}};
-        return P{{0, 0}, {1, 1}};
-    default:
-        return P{{0, 0}, {1, 1}};
-    }
-}
-
 TransferFunctionEditor::TransferFunctionEditor(EditHistory& history)
     : history_(history), curves_(history, 0.0f, 1.0f) {}
 
@@ -78,6 +39,8 @@ void TransferFunctionEditor::setScene(Node* root) {
     functions_.clear();
     data_ = nullptr;
     histogramValid_ = false;
+    minMaxValid_ = false;
+    if (windowLevelling_) endWindowLevel();
     selected_ = 0;
     if (root) {
         for (Node* n : findAll(*root, TransferFunction::classType(), true))
@@ -147,17 +110,80 @@ void TransferFunctionEditor::rebindCurves() {
     curves_.setFields(std::move(fields));
 }
 
-void TransferFunctionEditor::applyPreset(Preset preset) {
+void TransferFunctionEditor::applyPreset(const TransferFunctionPreset& preset, PresetApply apply) {
     TransferFunction* tf = selected();
     if (!tf) return;
-    history_.begin(std::string("preset ") + presetName(preset),
-                   {&tf->red, &tf->green, &tf->blue, &tf->alpha});
-    for (int bit : channelBits) {
-        MFVec2f* f = channelField(bit);
-        const auto points = presetChannel(preset, bit);
+    const glm::dvec2 range = effectiveDataRange(), minMax = dataMinMax();
+    std::vector<Field*> changed;
+    std::vector<int> channels;
+    for (int i = 0; i < 4; ++i) {
+        const bool colour = i < 3;
+        if ((colour && apply == PresetApply::Opacity) || (!colour && apply == PresetApply::Colour))
+            continue;
+        channels.push_back(i);
+        changed.push_back(channelField(channelBits[i]));
+    }
+    history_.begin("preset " + preset.name + " (" + presetApplyName(apply) + ")", changed);
+    for (int i : channels) {
+        MFVec2f* f = channelField(channelBits[i]);
+        const auto points = presetChannelInV(preset, i, range, minMax, hounsfieldZero_);
         if (f->getValues() != points) f->setValues(points);
     }
     history_.commit();
+}
+
+void TransferFunctionEditor::beginWindowLevel() {
+    TransferFunction* tf = selected();
+    if (!tf || windowLevelling_) return;
+    windowLevelling_ = true;
+    windowLevelStart_ = windowLevel();
+    history_.begin("window/level", {&tf->dataRange});
+}
+
+void TransferFunctionEditor::dragWindowLevel(glm::dvec2 offset, glm::dvec2 viewPixels) {
+    TransferFunction* tf = selected();
+    if (!tf || !windowLevelling_) return;
+    const glm::dvec2 minMax = dataMinMax();
+    double span = minMax.y - minMax.x;
+    if (!(span > 0.0)) span = std::abs(windowLevelStart_.width);
+    const glm::vec2 range(windowLevelStart_.dragged(offset, viewPixels, span).range());
+    if (std::isfinite(range.x) && std::isfinite(range.y) && tf->dataRange() != range)
+        tf->dataRange = range;
+}
+
+void TransferFunctionEditor::endWindowLevel() {
+    if (!windowLevelling_) return;
+    windowLevelling_ = false;
+    history_.commit();
+}
+
+TransferFunctionEditor::Readout TransferFunctionEditor::readout(double v) const {
+    Readout out;
+    const TransferFunction* tf = selected();
+    if (!tf) return out;
+    const glm::dvec2 range = effectiveDataRange();
+    out.value = range.x + v * (range.y - range.x);
+    out.rgba = tf->function().evaluate(v);
+    return out;
+}
+
+glm::dvec2 TransferFunctionEditor::dataMinMax() {
+    const std::uint64_t version = data_ ? data_->version() : 0;
+    if (minMaxValid_ && version == minMaxVersion_) return minMax_;
+    minMax_ = effectiveDataRange();
+    if (data_) {
+        try {
+            if (const ref_ptr<const VolumeGrid> grid = data_->grid()) {
+                const auto [lo, hi] = grid->minMax();
+                minMax_ = {lo, hi};
+            }
+        } catch (const std::exception&) {
+            // No data: the function's range stands in.
+        }
+    }
+    minMaxVersion_ = version;
+    minMaxValid_ = true;
+    return minMax_;
 }
 
 glm::dvec2 TransferFunctionEditor::effectiveDataRange() const {
@@ -181,6 +207,9 @@ const Histogram& TransferFunctionEditor::histogram() {
     const std::uint64_t version = data_ ? data_->version() : 0;
     if (histogramValid_ && range == histogramRange_ && version == histogramDataVersion_)
         return histogram_;
+    // A window/level drag changes the range every frame: the histogram (a pass over the data)
+    // is redone when the drag ends, not for each step.
+    if (histogramValid_ && windowLevelling_ && version == histogramDataVersion_) return histogram_;
     histogram_ = Histogram{};
     histogramRange_ = range;
     histogramDataVersion_ = version;

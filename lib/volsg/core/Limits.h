@@ -66,6 +66,11 @@ inline constexpr std::uintmax_t maxGltfFileSize = std::uintmax_t(1) << 30;
 inline constexpr int maxGltfNodeDepth = 256;
 /// Most elements an accessor without a bufferView (all zeros, sparse values only) may have.
 inline constexpr std::size_t maxGltfUnbackedCount = std::size_t(1) << 24;
+/// Most accessor values (elements x components) one glTF file may decode, all accessors
+/// together: 2^27 values are 1 GB as doubles.
+inline constexpr std::size_t maxGltfAccessorValues = std::size_t(1) << 27;
+/// Most image pixels one glTF file may decode, all images together (1 GB as RGBA).
+inline constexpr std::uint64_t maxGltfImagePixels = std::uint64_t(1) << 28;
 
 // --- Images (image/Image: PNG, PFM; glTF textures) ---
 

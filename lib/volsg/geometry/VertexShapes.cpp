@@ -13,8 +13,8 @@ bool validIndex(std::int64_t i, std::size_t count) {
     return i >= 0 && static_cast<std::uint64_t>(i) < count;
 }
 
-/// A count field's entries: -1 (and the last entry, if the list ends early) takes the rest of
-/// the points; other negative counts are left out.
+/// A count field's entries: -1 takes the rest of the points; other negative counts are left
+/// out; counts past the points are cut at them.
 template <class Visit>
 void forEachCounted(std::span<const std::int32_t> counts, std::int32_t startIndex,
                     std::size_t pointCount, Visit&& visit) {
@@ -27,6 +27,22 @@ void forEachCounted(std::span<const std::int32_t> counts, std::int32_t startInde
         visit(next, end);
         next = end;
     }
+}
+
+/// forEachCounted with each run's corners made: a non-indexed shape's vertex k is its point
+/// startIndex + k. `visit` gets the run's corners.
+template <class Visit>
+void forEachCountedRun(std::span<const std::int32_t> counts, std::int32_t startIndex,
+                       std::size_t pointCount, Visit&& visit) {
+    std::vector<Corner> corners;
+    forEachCounted(counts, startIndex, pointCount, [&](std::int64_t begin, std::int64_t end) {
+        corners.clear();
+        for (std::int64_t i = begin; i < end; ++i) {
+            const auto vertex = std::uint32_t(i - std::max(startIndex, 0));
+            corners.push_back({std::int32_t(i), vertex, vertex});
+        }
+        visit(std::span<const Corner>(corners));
+    });
 }
 
 /// Runs of an index field split at -1 (a trailing run without -1 counts too).
@@ -315,15 +331,8 @@ ShapeTopology makeTriangleStripSetTopology(std::span<const std::int32_t> numVert
                                            std::int32_t startIndex, std::size_t pointCount) {
     ShapeTopology t;
     std::uint32_t strip = 0, triangle = 0;
-    std::vector<Corner> corners;
-    forEachCounted(numVertices, startIndex, pointCount, [&](std::int64_t begin, std::int64_t end) {
-        corners.clear();
-        for (std::int64_t i = begin; i < end; ++i) {
-            const auto vertex = std::uint32_t(i - std::max(startIndex, 0));
-            corners.push_back({std::int32_t(i), vertex, vertex});
-        }
-        addStrip(t, corners, strip++, triangle);
-    });
+    forEachCountedRun(numVertices, startIndex, pointCount,
+                      [&](std::span<const Corner> run) { addStrip(t, run, strip++, triangle); });
     return t;
 }
 
@@ -364,11 +373,13 @@ ShapeTopology makeQuadMeshTopology(std::int32_t verticesPerRow, std::int32_t ver
     std::uint32_t quad = 0;
     for (std::int64_t r = 0; r + 1 < fitting; ++r)
         for (std::int64_t c = 0; c + 1 < columns; ++c) {
-            // As Coin draws a row: a quad strip of the next row's and this row's vertices.
-            t.corners.push_back(corner(r + 1, c));
+            // As Coin draws a row: a quad strip of this row's and the next row's vertices,
+            // (r, c) (r+1, c) (r, c+1) (r+1, c+1) ...; each quad winds (r, c) (r+1, c)
+            // (r+1, c+1) (r, c+1), which decides what SOLID culls.
             t.corners.push_back(corner(r, c));
-            t.corners.push_back(corner(r, c + 1));
+            t.corners.push_back(corner(r + 1, c));
             t.corners.push_back(corner(r + 1, c + 1));
+            t.corners.push_back(corner(r, c + 1));
             addFace(t, quad++, std::uint32_t(r));
         }
     return t;
@@ -392,14 +403,8 @@ ShapeTopology makeLineSetTopology(std::span<const std::int32_t> numVertices,
     ShapeTopology t;
     t.primitive = Mesh::Primitive::Lines;
     std::uint32_t polyline = 0, segment = 0;
-    std::vector<Corner> corners;
-    forEachCounted(numVertices, startIndex, pointCount, [&](std::int64_t begin, std::int64_t end) {
-        corners.clear();
-        for (std::int64_t i = begin; i < end; ++i) {
-            const auto vertex = std::uint32_t(i - std::max(startIndex, 0));
-            corners.push_back({std::int32_t(i), vertex, vertex});
-        }
-        addPolylineSegments(t, corners, polyline++, segment);
+    forEachCountedRun(numVertices, startIndex, pointCount, [&](std::span<const Corner> run) {
+        addPolylineSegments(t, run, polyline++, segment);
     });
     return t;
 }
@@ -445,15 +450,20 @@ ShapeTopology makePointSetTopology(std::int32_t numPoints, std::int32_t startInd
 
 glm::vec2 defaultTextureCoord(const glm::vec3& point, const glm::vec3& boxMin,
                               const glm::vec3& boxSize) {
-    int s = 0, t = 1;
-    // Longest side first; ties keep x, y, z order.
-    int order[3] = {0, 1, 2};
-    std::stable_sort(order, order + 3, [&](int a, int b) { return boxSize[a] > boxSize[b]; });
-    s = order[0];
-    t = order[1];
-    const float longest = boxSize[s];
-    if (!(longest > 0.0f)) return glm::vec2(0.0f);
-    return {(point[s] - boxMin[s]) / longest, (point[t] - boxMin[t]) / longest};
+    // Coin's mapping (SoTextureCoordinateBundle): s and t along the two axes other than the
+    // smallest (the first smallest on ties), the larger first; on a tie between them the
+    // higher axis first (Coin keeps Open Inventor's order: a cube's s runs along z). Each is
+    // divided by its own side, so both run 0..1 across the box.
+    int smallest = 0;
+    if (boxSize[1] < boxSize[smallest]) smallest = 1;
+    if (boxSize[2] < boxSize[smallest]) smallest = 2;
+    int s = (smallest + 1) % 3, t = (smallest + 2) % 3;
+    if (boxSize[s] == boxSize[t] ? s < t : boxSize[s] < boxSize[t]) std::swap(s, t);
+    const auto along = [&](int axis) {
+        const float side = boxSize[axis] > 0.0f ? boxSize[axis] : 1.0f;
+        return (point[axis] - boxMin[axis]) / side;
+    };
+    return {along(s), along(t)};
 }
 
 void buildVertexShapeMesh(const ShapeTopology& t, const VertexAttributes& a, Mesh& out) {

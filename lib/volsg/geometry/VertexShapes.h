@@ -114,9 +114,9 @@ ShapeTopology makePointSetTopology(std::int32_t numPoints, std::int32_t startInd
 void buildVertexShapeMesh(const ShapeTopology& topology, const VertexAttributes& attributes,
                           Mesh& out);
 
-/// Inventor's default texture coordinates for a box (SoTextureCoordinateDefault): s runs
-/// 0..1 along the box's longest side, t along the second longest from 0 to its length over the
-/// longest (ties in the order x, y, z).
+/// Coin's default texture coordinates for a box: s and t run 0..1 along the two axes other than
+/// the smallest, the longer one first (on a tie the higher axis first: a cube's s runs along z).
+/// The Inventor Mentor scales t by the longest side instead; Coin, the reference here, does not.
 glm::vec2 defaultTextureCoord(const glm::vec3& point, const glm::vec3& boxMin,
                               const glm::vec3& boxSize);
 

@@ -3,6 +3,7 @@
 #include <volsg/core/Error.h>
 #include <volsg/core/Limits.h>
 #include <volsg/gltf/GltfLoader.h>
+#include <volsg/io/ContainedFile.h>
 #include <volsg/io/RegularFile.h>
 
 #include <tiny_gltf.h>
@@ -175,6 +176,7 @@ private:
     std::string file_;
     tinygltf::Model& m_; ///< images are moved out of it
     std::vector<std::unique_ptr<AccessorValues>> accessorCache_;
+    std::size_t accessorValues_ = 0; ///< decoded so far, all accessors (a per-file total)
 };
 
 void Loader::checkExtensions() const {
@@ -242,8 +244,19 @@ const AccessorValues& Loader::accessor(int index) {
     out->count = a.count;
     out->components = components;
     const std::size_t elementSize = std::size_t(size) * std::size_t(components);
+    // A total over the file, after the view's own bounds: many accessors sharing one buffer
+    // must not add up past it.
+    const auto countValues = [&] {
+        const std::size_t values = a.count * std::size_t(components);
+        if (values / std::size_t(components) != a.count ||
+            values > limits::maxGltfAccessorValues - accessorValues_)
+            fail(what + ": the file's accessors decode more than " +
+                 std::to_string(limits::maxGltfAccessorValues) + " values in all");
+        accessorValues_ += values;
+    };
     if (a.bufferView >= 0) {
         const ByteRange r = viewRange(a.bufferView, a.byteOffset, a.count, elementSize, what, true);
+        countValues();
         out->values.resize(a.count * std::size_t(components));
         double* dst = out->values.data();
         for (std::size_t e = 0; e < a.count; ++e) {
@@ -252,6 +265,7 @@ const AccessorValues& Loader::accessor(int index) {
                 *dst++ = readComponent(p + std::size_t(c * size), a.componentType, a.normalized);
         }
     } else {
+        countValues();
         out->values.assign(a.count * std::size_t(components), 0.0);
     }
 
@@ -695,19 +709,11 @@ struct GltfFileAccess {
     std::string refusedWhy;
 };
 
-bool isInsideFolder(const GltfFileAccess& access, const std::string& path) {
-    std::error_code ec;
-    const std::filesystem::path canonical = std::filesystem::canonical(path, ec);
-    if (ec) return false;
-    const std::filesystem::path relative = canonical.lexically_relative(access.folder);
-    return !relative.empty() && *relative.begin() != ".." && relative.is_relative();
-}
-
 bool allowedFileExists(const std::string& path, void* user) {
     auto& access = *static_cast<GltfFileAccess*>(user);
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return false;
-    if (!isInsideFolder(access, path)) {
+    if (!isInsideFolder(access.folder, path)) {
         if (access.refused.empty()) {
             access.refused = path;
             access.refusedWhy = "outside the folder of the glTF file";
@@ -818,8 +824,18 @@ bool loadCheckedImage(tinygltf::Image* image, const int index, std::string* err,
                     " per side, " + std::to_string(limits::maxImagePixels) + " in all)\n";
         return false;
     }
+    // And the file's images together (eight large images may share one small file).
+    auto& decoded = *static_cast<std::uint64_t*>(user);
+    const std::uint64_t pixels = std::uint64_t(width) * height;
+    if (pixels > limits::maxGltfImagePixels - decoded) {
+        if (err)
+            *err += what + ": the file's images hold more than " +
+                    std::to_string(limits::maxGltfImagePixels) + " pixels in all\n";
+        return false;
+    }
+    decoded += pixels;
     return tinygltf::LoadImageData(image, index, err, warn, requiredWidth, requiredHeight, bytes,
-                                   size, user);
+                                   size, nullptr);
 }
 
 } // namespace
@@ -842,7 +858,8 @@ GltfAsset loadGltf(const std::string& path) {
     tinygltf::TinyGLTF parser;
     parser.SetFsCallbacks(
         {&allowedFileExists, &unexpandedPath, &readAllowedFile, &refuseWrite, &access});
-    parser.SetImageLoader(&loadCheckedImage, nullptr);
+    std::uint64_t decodedPixels = 0;
+    parser.SetImageLoader(&loadCheckedImage, &decodedPixels);
     std::string err, warn;
     const bool ok = binary ? parser.LoadBinaryFromFile(&model, &err, &warn, path)
                            : parser.LoadASCIIFromFile(&model, &err, &warn, path);

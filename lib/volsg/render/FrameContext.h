@@ -22,7 +22,7 @@ class ShapeRenderer;
 /// - Transparent: depth test GL_LESS, depth writes off, blending GL_SRC_ALPHA,
 ///   GL_ONE_MINUS_SRC_ALPHA. Shapes with a Material transparency > 0 queue themselves and are
 ///   drawn back to front (by the view depth of their centre) at the end of the pass.
-/// Face culling is off in every pass (lighting is two-sided).
+/// Face culling is off in every pass (shapes under SOLID ShapeHints turn it on for their draw).
 enum class RenderPass { Opaque, Volume, Transparent };
 
 /// The camera of a frame, in world coordinates.

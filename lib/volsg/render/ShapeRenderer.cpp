@@ -28,19 +28,15 @@ ShapeRenderer::ShapeRenderer() {
     ++programBuilds_;
     const Program& p = program_;
     auto at = [&p](const char* name) { return p.uniformLocation(name); };
-    loc_ = {at("uModel"),          at("uNormalMatrix"),
-            at("uViewProjection"), at("uView"),
-            at("uTextureMatrix"),  at("uLit"),
-            at("uHasNormals"),     at("uHasColors"),
-            at("uEmissive"),       at("uAmbient"),
-            at("uDiffuse"),        at("uSpecular"),
-            at("uShininess"),      at("uAlpha"),
-            at("uViewer"),         at("uSpot"),
-            at("uSpotExponent"),   at("uAttenuation"),
-            at("uTextureModel"),   at("uSphereMap"),
-            at("uTexture"),        at("uBlendColor"),
-            at("uFogType"),        at("uFogColor"),
-            at("uFogVisibility"),  SurfaceScope::Locations::of(p)};
+    loc_ = {at("uModel"),         at("uNormalMatrix"),  at("uViewProjection"),
+            at("uView"),          at("uTextureMatrix"), at("uLit"),
+            at("uHasNormals"),    at("uHasColors"),     at("uEmissive"),
+            at("uAmbient"),       at("uDiffuse"),       at("uSpecular"),
+            at("uShininess"),     at("uAlpha"),         at("uViewer"),
+            at("uSpot"),          at("uSpotExponent"),  at("uAttenuation"),
+            at("uTextureModel"),  at("uSphereMap"),     at("uTexture"),
+            at("uBlendColor"),    at("uFogType"),       at("uFogColor"),
+            at("uFogVisibility"), at("uTwoSided"),      SurfaceScope::Locations::of(p)};
     p.use();
     glUniform1i(loc_.texture, 0);
 }
@@ -122,6 +118,7 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
     // A mirroring model matrix turns the winding around.
     const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
     item.frontClockwise = look.clockwise != mirrored;
+    item.twoSided = look.twoSidedLighting;
     const ShapeTexturing& t = look.texturing;
     item.texture = t.texture && t.texture->uploaded ? t.texture : nullptr;
     item.textureModel = item.texture ? int(t.model) : -1;
@@ -161,6 +158,7 @@ void ShapeRenderer::draw(const DrawItem& item) {
     glUniformMatrix4fv(loc_.model, 1, GL_FALSE, glm::value_ptr(item.model));
     glUniformMatrix3fv(loc_.normalMatrix, 1, GL_FALSE, glm::value_ptr(item.normalMatrix));
     glUniform1i(loc_.lit, item.lit ? 1 : 0);
+    glUniform1i(loc_.twoSided, item.twoSided ? 1 : 0);
     glUniform1i(loc_.hasNormals, gpu.hasNormals ? 1 : 0);
     glUniform1i(loc_.hasColors, gpu.hasColors ? 1 : 0);
     glUniform3fv(loc_.emissive, 1, glm::value_ptr(item.emissive));

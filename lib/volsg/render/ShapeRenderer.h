@@ -68,6 +68,9 @@ struct ShapeLook {
     /// SoShapeHints with a known vertex ordering and SOLID: back faces are not drawn.
     bool cullBackFaces = false;
     bool clockwise = false; ///< the front faces wind clockwise (SoShapeHints CLOCKWISE)
+    /// Coin's rule (SoShapeHintsElement): two-sided lighting only for a known vertex ordering
+    /// and an unknown shape type; otherwise a face seen from behind keeps its normal (dark).
+    bool twoSidedLighting = false;
     ShapeTexturing texturing;
     ShapeEnvironment environment;
     std::span<const SceneLight> lights;     ///< in scope (with the headlight), world
@@ -82,8 +85,8 @@ struct ShapeLook {
 ///   alpha  = 1 - transparency
 /// then the texture by its model, then fog; strength is 1 for directional lights, the
 /// environment's attenuation and the cone for point and spot lights. Vertex colours replace
-/// the diffuse colour, N is flipped towards the viewer, and H is the half vector to the
-/// viewer. Lines and points without normals are unlit: emissive + diffuse.
+/// the diffuse colour, N is flipped towards the viewer under two-sided lighting, and H is the half
+/// vector to the viewer. Lines and points without normals are unlit: emissive + diffuse.
 class ShapeRenderer {
 public:
     static constexpr int kMaxLights = kMaxSurfaceLights;
@@ -140,7 +143,7 @@ private:
         bool lit = true;
         ShapeLook::Style style = ShapeLook::Style::Filled;
         float lineWidth = 1.0f, pointSize = 1.0f;
-        bool cull = false, frontClockwise = false;
+        bool cull = false, frontClockwise = false, twoSided = false;
         int textureModel = -1; ///< -1: none
         const ShapeTexture* texture = nullptr;
         glm::vec3 blendColor{0.0f};
@@ -157,7 +160,7 @@ private:
         GLint model, normalMatrix, viewProjection, view, textureMatrix, lit, hasNormals, hasColors,
             emissive, ambient, diffuse, specular, shininess, alpha, viewer, spot, spotExponent,
             attenuation, textureModel, sphereMap, texture, blendColor, fogType, fogColor,
-            fogVisibility;
+            fogVisibility, twoSided;
         SurfaceScope::Locations scope;
     };
 

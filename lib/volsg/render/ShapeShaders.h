@@ -29,6 +29,7 @@ in float vEyeDistance;
 uniform bool uLit;        // false for lines and points without normals: emissive + diffuse
 uniform bool uHasNormals; // else flat normals from the screen-space derivatives
 uniform bool uHasColors;  // vertex colours replace the diffuse colour
+uniform bool uTwoSided;   // a face seen from behind is lit on that side (ShapeHints)
 uniform vec3 uEmissive;
 uniform vec3 uAmbient;    // material ambient times the environment's ambient light
 uniform vec3 uDiffuse;
@@ -81,14 +82,17 @@ vec3 fogged(vec3 color) {
 
 void main() {
     vec3 diffuse = uHasColors ? vColor.rgb : uDiffuse;
-    float alpha = uAlpha * (uHasColors ? vColor.a : 1.0);
+    // Per-vertex colours carry their material's alpha (ShapeState's materialColor).
+    float alpha = uHasColors ? vColor.a : uAlpha;
     vec3 V = towardsViewer();
     vec3 N = uHasNormals ? vWorldNormal : vec3(0.0);
-    if (dot(N, N) <= 0.0) N = cross(dFdx(vWorldPosition), dFdy(vWorldPosition));
+    bool derived = dot(N, N) <= 0.0;
+    if (derived) N = cross(dFdx(vWorldPosition), dFdy(vWorldPosition));
     N = dot(N, N) > 0.0 ? normalize(N) : V;
-    // Two-sided lighting: the side facing the viewer is lit, so open or inverted meshes are
-    // not black inside.
-    if (dot(N, V) < 0.0) N = -N;
+    // Two-sided lighting lights the side facing the viewer. One-sided (Inventor's default,
+    // as Coin) keeps the given normal, so the inside of an open mesh is dark; a normal derived
+    // from the screen has no side and always faces the viewer.
+    if ((uTwoSided || derived) && dot(N, V) < 0.0) N = -N;
     if (!uLit) {
         vec4 unlit = textured(vec4(uEmissive + diffuse, alpha), N);
         fragColor = vec4(fogged(unlit.rgb), unlit.a);

@@ -9,8 +9,8 @@
 namespace volsg {
 
 ref_ptr<VolumeGrid> makeMovingSphere(int n, double t) {
-    if (n < 1) throw Error("makeMovingSphere needs n >= 1");
-    if (!(t >= 0.0 && t <= 1.0)) throw Error("makeMovingSphere needs 0 <= t <= 1");
+    if (n < 1) throw Error("the moving sphere series needs at least 1 voxel a side");
+    if (!(t >= 0.0 && t <= 1.0)) throw Error("the moving sphere series needs a time in [0, 1]");
     ref_ptr<VolumeGrid> grid = VolumeGrid::create({n, n, n}, VoxelType::UByte);
     const glm::dvec3 centre(n * (0.35 + 0.3 * t), 0.5 * n, 0.5 * n);
     const double radius = n * (0.2 + 0.1 * t);

@@ -13,6 +13,7 @@
 #include <limits>
 #include <utility>
 
+#include <volsg/shearwarp/ColumnMask.h>
 #include <volsg/shearwarp/PackedVoxel.h>
 #include <volsg/shearwarp/SplatRow.h>
 #include <volsg/shearwarp/UnderComposite.h>
@@ -160,14 +161,26 @@ float nextWeight(const EntryRows& rows, float fv, unsigned b) {
     return b == rows.edgeB1 ? (fv >= 0.5f ? 1.0f : 0.0f) : fv;
 }
 
-/// Zeros where the line was written (one memset, not a store per pixel), then empty.
+/// Zeros the runs of columns the line wrote (a memset each, not a store per pixel) and its
+/// marks, then empty.
 void clearLine(SplatLine* line) {
     if (!line) return;
-    if (line->lo < line->hi)
-        std::memset(static_cast<void*>(line->pixels + line->lo), 0,
-                    std::size_t(line->hi - line->lo) * sizeof(glm::vec4));
+    if (line->lo < line->hi) {
+        int begin = 0, end = 0;
+        if (4 * line->voxels >= 3 * (line->hi - line->lo)) // mostly written: one memset
+            std::memset(static_cast<void*>(line->pixels + line->lo), 0,
+                        std::size_t(line->hi - line->lo) * sizeof(glm::vec4));
+        else
+            for (columns::Runs runs(line->written, nullptr, line->lo, line->hi);
+                 runs.next(begin, end);)
+                std::memset(static_cast<void*>(line->pixels + begin), 0,
+                            std::size_t(end - begin) * sizeof(glm::vec4));
+        std::fill(line->written + (line->lo >> 6), line->written + ((line->hi - 1) >> 6) + 1,
+                  columns::Word(0));
+    }
     line->lo = kEmptyLo;
     line->hi = 0;
+    line->voxels = 0;
 }
 
 /// Composites band row `row` from line a (weight wa) and line b (weight wb; either may be
@@ -202,7 +215,14 @@ void compositeRow(const RowTarget& t, int row, const SplatLine* a, float wa, Spl
                               t.object,
                               slice,
                               t.slice->zSlice};
-        UnderComposite::composite(job.simd, target, pa, wa, pb, wb, lo, hi);
+        // Only the columns the lines wrote: a row of scattered voxels costs its voxels. Rows
+        // whose voxels fill most of [lo, hi) take the plain loop (the same pixels).
+        const int voxels = std::max(a ? a->voxels : 0, b ? b->voxels : 0);
+        if (4 * voxels >= 3 * (hi - lo))
+            UnderComposite::composite(job.simd, target, pa, wa, pb, wb, lo, hi);
+        else
+            UnderComposite::compositeWritten(job.simd, target, pa, wa, a ? a->written : nullptr, pb,
+                                             wb, b ? b->written : nullptr, lo, hi);
     } else {
         const Factorisation& f = *job.factorisation;
         const TwoLevelRow target{m.global + rowStart,
@@ -294,8 +314,9 @@ void drawEntry(const RowTarget& t, const RenderListEntry& e) {
     if (!entryRows(t, e, rows)) return;
     ++t.band->scratch->entries;
     const float fv = t.slice->fv;
-    SplatLine cur{t.band->scratch->lines[0].data(), kEmptyLo, 0};
-    SplatLine prev{t.band->scratch->lines[1].data(), kEmptyLo, 0};
+    BandScratch& scratch = *t.band->scratch;
+    SplatLine cur{scratch.lines[0].data(), kEmptyLo, 0, scratch.written[0].data() + 1};
+    SplatLine prev{scratch.lines[1].data(), kEmptyLo, 0, scratch.written[1].data() + 1};
     int prevB = -2;
     while (rows.at[0] < rows.end[0] || rows.at[1] < rows.end[1]) {
         const unsigned b = nextRow(rows);
@@ -391,6 +412,10 @@ void compositeBands(const BandJob& job, std::atomic<int>& nextBand, BandScratch&
     const std::size_t lineLength = std::size_t(job.factorisation->W) + 1;
     scratch.lines[0].assign(lineLength, glm::vec4(0.0f));
     scratch.lines[1].assign(lineLength, glm::vec4(0.0f));
+    // One word before the first (read as the carry into word 0) and one after the last.
+    const std::size_t words = lineLength / 64 + 3;
+    scratch.written[0].assign(words, 0);
+    scratch.written[1].assign(words, 0);
     scratch.voxels = 0;
     scratch.hidden = 0;
     scratch.entries = 0;

@@ -101,25 +101,20 @@ void checkView(const ShearWarpView& view) {
     if (view.width <= 0 || view.height <= 0) throw Error("shear-warp: empty output size");
 }
 
-ShearWarpFrame takeOutputBuffers(ShearWarpFrame& spare, const ShearWarpView& view) {
-    // The buffers of a recycled frame: its image is 0 and its depth 1 outside the rectangle
-    // it drew, so only that is cleared (no allocation, no page faults, no full clear).
+ShearWarpFrame takeOutputBuffers(ShearWarpFrame& spare, const ShearWarpView& view,
+                                 StaleOutput& stale) {
+    // The buffers of a recycled frame: its image is 0 and its depth 1 outside the rectangle it
+    // drew, and that is cleared only where the new frame does not write it (no allocation, no
+    // page faults, no full clear, no second pass over the pixels the warp writes anyway).
     ShearWarpFrame frame;
+    stale = StaleOutput{};
     const std::size_t outPixels = std::size_t(view.width) * std::size_t(view.height);
     if (spare.image.width == view.width && spare.image.height == view.height &&
         spare.image.pixels.size() == outPixels && spare.windowDepth.size() == outPixels) {
         frame.image = std::move(spare.image);
         frame.windowDepth = std::move(spare.windowDepth);
-        const glm::ivec4 d = spare.drawn;
-        const std::size_t from = std::size_t(d.y) * std::size_t(view.width);
-        const std::size_t to = std::size_t(d.w) * std::size_t(view.width);
-        if (d.x < d.z && d.y < d.w) {
-            std::fill(frame.image.pixels.begin() + std::ptrdiff_t(from),
-                      frame.image.pixels.begin() + std::ptrdiff_t(to), glm::vec4(0.0f));
-            if (spare.wroteDepth)
-                std::fill(frame.windowDepth.begin() + std::ptrdiff_t(from),
-                          frame.windowDepth.begin() + std::ptrdiff_t(to), 1.0f);
-        }
+        if (spare.drawn.x < spare.drawn.z && spare.drawn.y < spare.drawn.w)
+            stale = StaleOutput{spare.drawn, spare.wroteDepth};
     } else {
         frame.image = Image(view.width, view.height);
         frame.windowDepth.assign(outPixels, 1.0f);
@@ -128,6 +123,20 @@ ShearWarpFrame takeOutputBuffers(ShearWarpFrame& spare, const ShearWarpView& vie
     frame.pickSlice = std::move(spare.pickSlice);
     spare = ShearWarpFrame();
     return frame;
+}
+
+void clearStaleRows(const StaleOutput& stale, ShearWarpFrame& frame, int y0, int y1) {
+    const glm::ivec4 r = stale.rect;
+    const std::size_t width = std::size_t(frame.image.width);
+    for (int y = std::max(y0, r.y); y < std::min(y1, r.w); ++y) {
+        const std::size_t row = std::size_t(y) * width;
+        std::fill(frame.image.pixels.begin() + std::ptrdiff_t(row + std::size_t(r.x)),
+                  frame.image.pixels.begin() + std::ptrdiff_t(row + std::size_t(r.z)),
+                  glm::vec4(0.0f));
+        if (stale.depth)
+            std::fill(frame.windowDepth.begin() + std::ptrdiff_t(row + std::size_t(r.x)),
+                      frame.windowDepth.begin() + std::ptrdiff_t(row + std::size_t(r.z)), 1.0f);
+    }
 }
 
 void checkObjects(const std::vector<ShearWarpObject>& objects) {

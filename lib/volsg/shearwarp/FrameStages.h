@@ -2,7 +2,8 @@
 // The stages of a shear-warp frame and the plain data passed between them (internal to
 // lib/volsg/shearwarp; ShearWarpRenderer::renderFrame runs them in this order):
 //
-//   1. takeOutputBuffers   the output image and depth (a recycled frame's, cleared where drawn)
+//   1. takeOutputBuffers   the output image and depth (a recycled frame's: what it drew is
+//                          cleared by the warp, row by row, where the new frame does not write)
 //   2. factorise           principal axis, shear, intermediate size, warp and depth maps
 //   3. frameObjects, lockLists, prepareObjects
 //                          each object's list for the axis, locked; clip split, tables, slices
@@ -62,9 +63,19 @@ template <class F> void parallelFor(WorkerPool& pool, int count, F body) {
 
 /// Throws Error for a perspective projection or an empty output size.
 void checkView(const ShearWarpView& view);
-/// A frame with the output image (0) and depth (1) of the view's size: the recycled frame's
-/// buffers when they fit (only the rectangle it drew is cleared), and its pick arrays.
-ShearWarpFrame takeOutputBuffers(ShearWarpFrame& spare, const ShearWarpView& view);
+/// What a recycled frame drew and is not cleared yet: its image outside `rect` is 0, its depth 1
+/// (everywhere unless `depth`).
+struct StaleOutput {
+    glm::ivec4 rect{0}; ///< (x0, y0, x1, y1), exclusive; empty: nothing
+    bool depth = false;
+};
+/// A frame with the output image and depth of the view's size: the recycled frame's buffers
+/// when they fit, with what they drew in `stale` (cleared by the warp, or clearStaleRows), else
+/// new ones (0 and 1); and its pick arrays.
+ShearWarpFrame takeOutputBuffers(ShearWarpFrame& spare, const ShearWarpView& view,
+                                 StaleOutput& stale);
+/// Clears output rows [y0, y1) of the stale rectangle (image 0, depth 1).
+void clearStaleRows(const StaleOutput& stale, ShearWarpFrame& frame, int y0, int y1);
 /// Throws Error unless every object has voxels and all come from one volume.
 void checkObjects(const std::vector<ShearWarpObject>& objects);
 
@@ -225,9 +236,12 @@ struct WarpJob {
     glm::dvec4 reach;    ///< (u0, v0, u1, v1): intermediate box whose output can be non-zero
     glm::vec4* out;      ///< output image
     float* windowDepth;  ///< output depth
+    StaleOutput stale;   ///< cleared where the warp does not write
+    SimdLevel simd;      ///< Avx2: four pixels' coordinates at once (the same pixels)
 };
 
-/// The warp of output rows [y0, y1); returns the rectangle it wrote (x0, y0, x1, y1).
+/// The warp of output rows [y0, y1) (and the clear of the stale pixels in them); returns the
+/// rectangle it wrote (x0, y0, x1, y1).
 glm::ivec4 warpRows(const WarpJob& job, int y0, int y1);
 
 } // namespace volsg::shearwarp

@@ -85,7 +85,7 @@ std::vector<glm::ivec4> drawValueSortedMip(WorkerPool& pool, const BandJob& job,
 /// image (the union of `touched`) can differ from 0 (and depth 1): the others are skipped.
 void warpFrame(WorkerPool& pool, const Factorisation& f, const FrameBuffers& buffers,
                bool anySurface, const std::vector<glm::ivec4>& touched, int threads,
-               ShearWarpFrame& frame) {
+               const StaleOutput& stale, SimdLevel simd, ShearWarpFrame& frame) {
     glm::ivec4 box(f.W, f.H, 0, 0);
     for (const glm::ivec4& b : touched)
         box = glm::ivec4(glm::min(glm::ivec2(box), glm::ivec2(b)),
@@ -104,7 +104,9 @@ void warpFrame(WorkerPool& pool, const Factorisation& f, const FrameBuffers& buf
                       std::abs(f.sb) < 1e-9,
                       glm::dvec4(box.x - 2.0, box.y - 2.0, box.z + 1.0, box.w + 1.0),
                       frame.image.pixels.data(),
-                      frame.windowDepth.data()};
+                      frame.windowDepth.data(),
+                      stale,
+                      simd};
     const int outThreads = std::clamp(threads, 1, std::max(1, f.height / 8));
     std::vector<glm::ivec4> drawnRows(std::size_t(outThreads), glm::ivec4(f.width, f.height, 0, 0));
     if (box.x < box.z && box.y < box.w)
@@ -112,6 +114,8 @@ void warpFrame(WorkerPool& pool, const Factorisation& f, const FrameBuffers& buf
             drawnRows[std::size_t(t)] =
                 warpRows(job, f.height * t / outThreads, f.height * (t + 1) / outThreads);
         });
+    else
+        clearStaleRows(stale, frame, 0, f.height);
     frame.drawn = glm::ivec4(f.width, f.height, 0, 0);
     for (const glm::ivec4& d : drawnRows)
         frame.drawn =
@@ -221,8 +225,10 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
                                               const ShearWarpView& view) {
     // 1. The output image and depth.
     checkView(view);
-    ShearWarpFrame frame = takeOutputBuffers(spare_, view);
+    StaleOutput stale;
+    ShearWarpFrame frame = takeOutputBuffers(spare_, view, stale);
     if (objects.empty()) {
+        clearStaleRows(stale, frame, 0, view.height);
         frame.pickObject.clear();
         frame.pickSlice.clear();
         return frame;
@@ -258,7 +264,7 @@ ShearWarpFrame ShearWarpRenderer::renderFrame(std::vector<ShearWarpObject>& obje
     addVoxelCounts(scratch_.bands, frame.stats);
     locks.clear(); // the lists are not read after compositing
     // 7. Warp. (Picking reads the pick arrays filled while compositing and the factorisation.)
-    warpFrame(*pool_, f, buffers, paths.anySurface, touched, threads, frame);
+    warpFrame(*pool_, f, buffers, paths.anySurface, touched, threads, stale, view.simd, frame);
     return frame;
 }
 

@@ -18,7 +18,8 @@ namespace shearwarp {
 
 /// The scratch of one band-compositing thread (internal to the renderer).
 struct BandScratch {
-    std::vector<glm::vec4> lines[2]; ///< one voxel row resampled along a, and the previous
+    std::vector<glm::vec4> lines[2];       ///< one voxel row resampled along a, and the previous
+    std::vector<std::uint64_t> written[2]; ///< the lines' written columns (ColumnMask.h)
     std::uint64_t voxels = 0, hidden = 0;
     std::uint64_t entries = 0;
 };

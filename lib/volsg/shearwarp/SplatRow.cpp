@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include <volsg/shearwarp/ColumnMask.h>
 #include <volsg/shearwarp/Lanes4.h>
 #include <volsg/shearwarp/PackedVoxel.h>
 
@@ -53,24 +54,19 @@ template <bool Fresh, bool SkipHidden, SplatLookup Lookup>
     V4 pending{};
     int pendingCol = -2;
     int firstCol = std::numeric_limits<int>::max(), lastCol = -1;
+    columns::Word* const written = out.written;
+    int marked = 0;
     for (std::uint32_t i = row.begin; i < row.end; ++i) {
         const std::uint32_t v = packed[i];
-        V4 colour;
-        if constexpr (Lookup == SplatLookup::MipValue)
-            colour = V4{float(row.values[i]) * (1.0f / 4095.0f), 0.0f, 0.0f, 1.0f};
-        else if constexpr (Lookup == SplatLookup::Direct)
-            colour = loadV4(row.rgba[PackedVoxel::attributes16(v) & row.mask]);
-        else
-            colour =
-                loadV4(row.rgba[(PackedVoxel::second4(v) << 8) | row.lut2[PackedVoxel::main12(v)]]);
-        // A transparent voxel adds zero shares: only the accumulating part and hidden-voxel
-        // skipping (its range must not grow) need to leave it out.
-        if ((!Fresh || SkipHidden) && colour[3] <= 0.0f) continue;
         const unsigned va = PackedVoxel::a(v);
         const int col = int(va) + colBase;
-        if constexpr (SkipHidden) {
-            if (col < hiddenBefore) {
-                ++hidden;
+        if constexpr (SkipHidden) {   // before the lookup: a hidden voxel costs its position only
+            if (col < hiddenBefore) { // so are the next ones below hiddenBefore (sorted by a)
+                std::uint32_t j = i + 1;
+                while (j < row.end && int(PackedVoxel::a(packed[j])) + colBase < hiddenBefore)
+                    ++j;
+                hidden += j - i;
+                i = j - 1;
                 continue;
             }
             if (col > visibleThrough) {
@@ -88,6 +84,19 @@ template <bool Fresh, bool SkipHidden, SplatLookup Lookup>
                 visibleThrough = col;
             }
         }
+        V4 colour;
+        if constexpr (Lookup == SplatLookup::MipValue)
+            colour = V4{float(row.values[i]) * (1.0f / 4095.0f), 0.0f, 0.0f, 1.0f};
+        else if constexpr (Lookup == SplatLookup::Direct)
+            colour = loadV4(row.rgba[PackedVoxel::attributes16(v) & row.mask]);
+        else
+            colour =
+                loadV4(row.rgba[(PackedVoxel::second4(v) << 8) | row.lut2[PackedVoxel::main12(v)]]);
+        // A transparent voxel adds zero shares: only the accumulating part and hidden-voxel
+        // skipping (its range must not grow) need to leave it out.
+        if ((!Fresh || SkipHidden) && colour[3] <= 0.0f) continue;
+        columns::mark(written, col);
+        ++marked;
         // Its shares of the two columns; face voxels (only a row's first or last: sorted by a)
         // weigh their own.
         V4 share0 = left * colour, share1 = right * colour;
@@ -114,6 +123,7 @@ template <bool Fresh, bool SkipHidden, SplatLookup Lookup>
             storeV4(line[col + 1], loadV4(line[col + 1]) + share1);
         }
     }
+    out.voxels += marked;
     if (pendingCol >= 0) {
         storeV4(line[pendingCol], pending);
         lastCol = pendingCol - 1;

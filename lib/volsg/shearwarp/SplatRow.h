@@ -48,10 +48,14 @@ struct SplatRow {
 };
 
 /// The line a row is splatted into: premultiplied colour and alpha per column, and the columns
-/// written so far, [lo, hi) (lo = INT_MAX, hi = 0: none).
+/// written so far, [lo, hi) (lo = INT_MAX, hi = 0: none), and bit by bit in `written`
+/// (ColumnMask.h: the left column of each voxel splatted; readable at word -1). Outside the
+/// columns `written` covers the line is 0.
 struct SplatLine {
     glm::vec4* pixels;
     int lo, hi;
+    std::uint64_t* written;
+    int voxels = 0; ///< voxels splatted into it (marked)
 };
 
 /// The hidden-voxel state of one voxel row, carried from its first part to its second: voxels
@@ -63,12 +67,14 @@ struct SplatSkip {
 
 struct RowSplat {
     /// Splats voxels begin..end-1 in order: voxel a with colour C adds (1 - fu) C to column
-    /// a + colBase and fu C to the next (face voxels: the weights above on their outer column)
-    /// and widens [lo, hi) to both columns. Transparent voxels (alpha <= 0) are left out, except
-    /// on a fresh line without skipHidden (there they add zeros, and still widen [lo, hi)); with
-    /// skipHidden, hidden voxels are left out and counted. Every level gives the same line bit
-    /// for bit. Levels: Scalar (a vec4 per SSE/NEON instruction); Avx2 runs the scalar kernel
-    /// (a splat of voxel pairs in 256-bit registers measured no faster: README.md).
+    /// a + colBase and fu C to the next (face voxels: the weights above on their outer column),
+    /// widens [lo, hi) to both columns and marks its left column in `written`. With skipHidden,
+    /// hidden voxels are left out and counted before their colour is looked up (a run of them
+    /// below hiddenBefore without reading more than their positions). Transparent voxels (alpha
+    /// <= 0) are left out, except on a fresh line without skipHidden (there they add zeros, and
+    /// still widen [lo, hi) and mark). Every level gives the same line bit for bit. Levels: Scalar
+    /// (a vec4 per SSE/NEON instruction); Avx2 runs the scalar kernel (a splat of voxel pairs in
+    /// 256-bit registers measured no faster: README.md).
     static void splat(SimdLevel level, const SplatRow& row, SplatLine& line, SplatSkip& skip);
 };
 

@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include <volsg/shearwarp/ColumnMask.h>
 #include <volsg/shearwarp/Lanes4.h>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -51,14 +52,25 @@ inline void underPixel(const UnderRow& row, const glm::vec4* a, float wa, const 
     }
 }
 
+/// The columns a kernel visits: [lo, hi) whole (no masks), or the runs in it that the lines'
+/// masks cover (columns::Runs).
+struct Columns {
+    const columns::Word* maskA;
+    const columns::Word* maskB;
+    int lo, hi;
+};
+
 /// A function of its own per line combination (not inlined into the band loop) so the compiler
 /// keeps the loop's values in registers: inlined, it went through the stack for every pixel.
 template <bool HasA, bool HasB, bool HasLimit>
 [[gnu::noinline]] void underScalar(const UnderRow& row, const glm::vec4* a, float wa,
-                                   const glm::vec4* b, float wb, int lo, int hi) {
+                                   const glm::vec4* b, float wb, const Columns& columns) {
     const UnderRow local = row; // read through `row` the pointers were reloaded after every store
-    for (int c = lo; c < hi; ++c)
-        underPixel<HasA, HasB, HasLimit>(local, a, wa, b, wb, c);
+    int lo = 0, hi = 0;
+    for (columns::Runs runs(columns.maskA, columns.maskB, columns.lo, columns.hi);
+         runs.next(lo, hi);)
+        for (int c = lo; c < hi; ++c)
+            underPixel<HasA, HasB, HasLimit>(local, a, wa, b, wb, c);
 }
 
 #ifdef VOLSG_UNDER_AVX2
@@ -109,57 +121,75 @@ underPairAvx2(const UnderRow& row, const Avx2Weights& k, const glm::vec4* a, flo
     }
 }
 
-/// Four pixels a step (two pairs, interleaved by the compiler), then the rest.
+/// Four pixels a step (two pairs, interleaved by the compiler), then the rest, per span.
 template <bool HasA, bool HasB>
 [[gnu::noinline, gnu::target("avx2")]] void underAvx2(const UnderRow& row, const glm::vec4* a,
                                                       float wa, const glm::vec4* b, float wb,
-                                                      int lo, int hi) {
+                                                      const Columns& columns) {
     const UnderRow local = row;
     const Avx2Weights k{_mm256_set1_ps(wa),  _mm256_set1_ps(wb),         _mm256_set1_ps(1.0f),
                         _mm256_setzero_ps(), _mm256_set1_ps(kPickAlpha), _mm256_set1_ps(kOpaque)};
-    int c = lo;
-    for (; c + 4 <= hi; c += 4) {
-        underPairAvx2<HasA, HasB>(local, k, a, wa, b, wb, c);
-        underPairAvx2<HasA, HasB>(local, k, a, wa, b, wb, c + 2);
+    int lo = 0, hi = 0;
+    for (columns::Runs runs(columns.maskA, columns.maskB, columns.lo, columns.hi);
+         runs.next(lo, hi);) {
+        int c = lo;
+        for (; c + 4 <= hi; c += 4) {
+            underPairAvx2<HasA, HasB>(local, k, a, wa, b, wb, c);
+            underPairAvx2<HasA, HasB>(local, k, a, wa, b, wb, c + 2);
+        }
+        if (c + 2 <= hi) {
+            underPairAvx2<HasA, HasB>(local, k, a, wa, b, wb, c);
+            c += 2;
+        }
+        if (c < hi) underPixel<HasA, HasB, false>(local, a, wa, b, wb, c);
     }
-    if (c + 2 <= hi) {
-        underPairAvx2<HasA, HasB>(local, k, a, wa, b, wb, c);
-        c += 2;
-    }
-    if (c < hi) underPixel<HasA, HasB, false>(local, a, wa, b, wb, c);
 }
 
 #endif
 
 template <bool HasA, bool HasB>
 void dispatch(SimdLevel level, const UnderRow& row, const glm::vec4* a, float wa,
-              const glm::vec4* b, float wb, int lo, int hi) {
+              const glm::vec4* b, float wb, const Columns& columns) {
     if (row.limit) {
-        underScalar<HasA, HasB, true>(row, a, wa, b, wb, lo, hi);
+        underScalar<HasA, HasB, true>(row, a, wa, b, wb, columns);
         return;
     }
 #ifdef VOLSG_UNDER_AVX2
     if (level == SimdLevel::Avx2) {
-        underAvx2<HasA, HasB>(row, a, wa, b, wb, lo, hi);
+        underAvx2<HasA, HasB>(row, a, wa, b, wb, columns);
         return;
     }
 #else
     (void)level;
 #endif
-    underScalar<HasA, HasB, false>(row, a, wa, b, wb, lo, hi);
+    underScalar<HasA, HasB, false>(row, a, wa, b, wb, columns);
+}
+
+void compositeColumns(SimdLevel level, const UnderRow& row, const glm::vec4* a, float wa,
+                      const glm::vec4* b, float wb, const Columns& columns) {
+    if (!simdLevelAvailable(level)) level = SimdLevel::Scalar;
+    if (a && b)
+        dispatch<true, true>(level, row, a, wa, b, wb, columns);
+    else if (a)
+        dispatch<true, false>(level, row, a, wa, b, wb, columns);
+    else if (b)
+        dispatch<false, true>(level, row, a, wa, b, wb, columns);
 }
 
 } // namespace
 
 void UnderComposite::composite(SimdLevel level, const UnderRow& row, const glm::vec4* a, float wa,
                                const glm::vec4* b, float wb, int lo, int hi) {
-    if (!simdLevelAvailable(level)) level = SimdLevel::Scalar;
-    if (a && b)
-        dispatch<true, true>(level, row, a, wa, b, wb, lo, hi);
-    else if (a)
-        dispatch<true, false>(level, row, a, wa, b, wb, lo, hi);
-    else if (b)
-        dispatch<false, true>(level, row, a, wa, b, wb, lo, hi);
+    compositeColumns(level, row, a, wa, b, wb, Columns{nullptr, nullptr, lo, hi});
+}
+
+void UnderComposite::compositeWritten(SimdLevel level, const UnderRow& row, const glm::vec4* a,
+                                      float wa, const std::uint64_t* maskA, const glm::vec4* b,
+                                      float wb, const std::uint64_t* maskB, int lo, int hi) {
+    if (!a) maskA = nullptr;
+    if (!b) maskB = nullptr;
+    if (!maskA && !maskB) return; // no line: nothing written
+    compositeColumns(level, row, a, wa, b, wb, Columns{maskA, maskB, lo, hi});
 }
 
 } // namespace volsg

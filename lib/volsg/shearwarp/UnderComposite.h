@@ -34,6 +34,14 @@ struct UnderComposite {
     /// same pixels bit for bit.
     static void composite(SimdLevel level, const UnderRow& row, const glm::vec4* a, float wa,
                           const glm::vec4* b, float wb, int lo, int hi);
+    /// The same on the columns of [lo, hi) that the lines' splats wrote (ColumnMask.h: a
+    /// voxel's bit covers its column and the next; maskA belongs to line a, maskB to line b, and
+    /// must be readable at word -1). Elsewhere both samples are 0, which changes no pixel: the
+    /// pixels and picks are those of `composite` bit for bit; only an opaque pixel there is not
+    /// linked now (a later slice links it where a voxel meets it).
+    static void compositeWritten(SimdLevel level, const UnderRow& row, const glm::vec4* a, float wa,
+                                 const std::uint64_t* maskA, const glm::vec4* b, float wb,
+                                 const std::uint64_t* maskB, int lo, int hi);
 };
 
 } // namespace volsg

@@ -9,8 +9,8 @@ namespace volsg {
 
 namespace {
 
-/// Opacity of one sample of spacing ds for a slab opacity A over L0 (docs/SCENE-FORMAT.md section 4),
-/// with the object's extinction multiplier folded into the exponent.
+/// Opacity of one sample of spacing ds for a slab opacity A over L0 (docs/SCENE-FORMAT.md section
+/// 4), with the object's extinction multiplier folded into the exponent.
 float corrected(double alpha, double exponent) {
     const double a = std::clamp(alpha, 0.0, 1.0 - 1e-6);
     if (a <= 0.0 || exponent <= 0.0) return 0.0f;

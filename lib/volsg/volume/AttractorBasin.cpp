@@ -109,9 +109,13 @@ void smooth(Field& f, int r) {
 } // namespace
 
 AttractorBasinVolume makeAttractorBasin(int n) {
-    if (n < 16) throw Error("makeAttractorBasin needs n >= 16, got " + std::to_string(n));
+    if (n < 16)
+        throw Error("the attractor-basin volume needs at least 16 voxels a side, got " +
+                    std::to_string(n));
     // Working memory is about 11 n^3 bytes (two float fields): 1.5 GB at 512.
-    if (n > 512) throw Error("makeAttractorBasin makes at most 512^3, got " + std::to_string(n));
+    if (n > 512)
+        throw Error("the attractor-basin volume has at most 512 voxels a side, got " +
+                    std::to_string(n));
 
     // The trajectory: a fixed start, a transient left out, then samples every h. The sample
     // count grows with the attractor's area in voxels (n^2), so the density per voxel stays put.

@@ -30,8 +30,8 @@ double scaleUnit(double unit, VoxelType type) {
 
 void requireSize(int n, int minimum, const char* what) {
     if (n < minimum)
-        throw Error(std::string(what) + " needs n >= " + std::to_string(minimum) + ", got " +
-                    std::to_string(n));
+        throw Error(std::string(what) + " needs at least " + std::to_string(minimum) +
+                    " voxels a side, got " + std::to_string(n));
 }
 
 // Distance of voxel (i,j,k)'s centre from the grid centre, in voxel units.
@@ -50,7 +50,7 @@ double marschnerLobb(double x, double y, double z, double fM, double alpha) {
 }
 
 ref_ptr<VolumeGrid> makeMarschnerLobb(int n, VoxelType type) {
-    requireSize(n, 2, "makeMarschnerLobb");
+    requireSize(n, 2, "the Marschner-Lobb volume");
     const double h = 2.0 / (n - 1);
     auto grid = VolumeGrid::create({n, n, n}, type, glm::dvec3(h));
     for (int k = 0; k < n; ++k)
@@ -63,7 +63,7 @@ ref_ptr<VolumeGrid> makeMarschnerLobb(int n, VoxelType type) {
 }
 
 ref_ptr<VolumeGrid> makeSoftSphere(int n, VoxelType type) {
-    requireSize(n, 1, "makeSoftSphere");
+    requireSize(n, 1, "the soft sphere volume");
     auto grid = VolumeGrid::create({n, n, n}, type);
     const double radius = 0.45 * n;
     for (int k = 0; k < n; ++k)
@@ -76,9 +76,9 @@ ref_ptr<VolumeGrid> makeSoftSphere(int n, VoxelType type) {
 }
 
 ref_ptr<VolumeGrid> makeThinShell(int n, double radius, double thickness) {
-    requireSize(n, 1, "makeThinShell");
+    requireSize(n, 1, "the thin shell volume");
     if (!(thickness > 0.0) || !(radius >= 0.0))
-        throw Error("makeThinShell needs radius >= 0 and thickness > 0");
+        throw Error("the thin shell volume needs a radius >= 0 and a thickness > 0");
     auto grid = VolumeGrid::create({n, n, n}, VoxelType::UByte);
     for (int k = 0; k < n; ++k)
         for (int j = 0; j < n; ++j)
@@ -89,7 +89,7 @@ ref_ptr<VolumeGrid> makeThinShell(int n, double radius, double thickness) {
 }
 
 ref_ptr<VolumeGrid> makeFullRange16(int n) {
-    requireSize(n, 2, "makeFullRange16");
+    requireSize(n, 2, "the 16-bit full-range volume");
     const double sigma = 0.25 * n;
     std::vector<double> g(std::size_t(n) * n * n);
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -110,7 +110,7 @@ ref_ptr<VolumeGrid> makeFullRange16(int n) {
 }
 
 LabelledVolume makeLabelledVolume(int n) {
-    requireSize(n, 1, "makeLabelledVolume");
+    requireSize(n, 1, "the labelled volume");
     LabelledVolume out{makeSoftSphere(n, VoxelType::UByte),
                        VolumeGrid::create({n, n, n}, VoxelType::UByte)};
     for (int k = 0; k < n; ++k)
@@ -139,7 +139,7 @@ ref_ptr<VolumeGrid> makeConstant(glm::ivec3 dimensions, VoxelType type, double v
 
 ref_ptr<VolumeGrid> makeRamp(glm::ivec3 dimensions, VoxelType type, int axis, double first,
                              double last, glm::dvec3 spacing) {
-    if (axis < 0 || axis > 2) throw Error("makeRamp: axis must be 0, 1 or 2");
+    if (axis < 0 || axis > 2) throw Error("the ramp volume's axis must be 0, 1 or 2");
     auto grid = VolumeGrid::create(dimensions, type, spacing);
     const int n = dimensions[axis];
     for (int k = 0; k < dimensions.z; ++k)

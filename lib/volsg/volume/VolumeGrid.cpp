@@ -149,6 +149,7 @@ double VolumeGrid::value(std::size_t index) const {
 }
 
 void VolumeGrid::setValue(std::size_t index, double v) {
+    rangeKnown_.store(false, std::memory_order_relaxed);
     std::visit(
         [index, v](auto& data) {
             using T = typename std::decay_t<decltype(data)>::value_type;
@@ -161,6 +162,7 @@ void VolumeGrid::setValue(std::size_t index, double v) {
 }
 
 std::span<std::byte> VolumeGrid::bytes() {
+    rangeKnown_.store(false, std::memory_order_release); // the caller may write
     return std::visit([](auto& v) { return std::as_writable_bytes(std::span(v.data(), v.size())); },
                       storage_);
 }
@@ -176,6 +178,16 @@ void VolumeGrid::throwTypeMismatch() const {
 }
 
 std::pair<double, double> VolumeGrid::minMax() const {
+    if (rangeKnown_.load(std::memory_order_acquire)) return range_;
+    std::lock_guard<std::mutex> lock(rangeMutex_);
+    if (!rangeKnown_.load(std::memory_order_acquire)) {
+        range_ = computeMinMax();
+        rangeKnown_.store(true, std::memory_order_release);
+    }
+    return range_;
+}
+
+std::pair<double, double> VolumeGrid::computeMinMax() const {
     return std::visit(
         [](const auto& data) {
             using T = std::decay_t<decltype(data[0])>;
@@ -206,9 +218,12 @@ std::pair<double, double> VolumeGrid::naturalRange() const {
     case VoxelType::UByte:
         return {0.0, 255.0};
     case VoxelType::UShort:
-        return {0.0, 65535.0};
-    case VoxelType::Short:
-        return {-32768.0, 32767.0};
+    case VoxelType::Short: {
+        // 16-bit data rarely spans its type: 12-bit CT in SHORT uses a sliver of -32768..32767.
+        const auto range = minMax();
+        if (range.first < range.second) return range;
+        return type_ == VoxelType::UShort ? std::pair(0.0, 65535.0) : std::pair(-32768.0, 32767.0);
+    }
     case VoxelType::Float:
         return minMax();
     }

@@ -1,8 +1,10 @@
 #pragma once
 // A typed 3D scalar grid: the voxels of one volume (or of its label volume) in memory.
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <mutex>
 #include <span>
 #include <utility>
 #include <variant>
@@ -12,6 +14,7 @@
 
 #include <volsg/core/Limits.h>
 #include <volsg/core/Object.h>
+#include <volsg/volume/VolumeGeometry.h>
 
 namespace volsg {
 
@@ -59,6 +62,11 @@ public:
     glm::dvec3 voxelCenter(int i, int j, int k) const; ///< in local coordinates
     bool isLabelType() const { return type_ == VoxelType::UByte || type_ == VoxelType::UShort; }
 
+    /// The file's placement in patient space (VolumeGeometry.h); unknown for raw and generated
+    /// grids. Rendering uses the centred local box; a scene built for the file places it.
+    const VolumeGeometry& geometry() const { return geometry_; }
+    void setGeometry(const VolumeGeometry& geometry) { geometry_ = geometry; }
+
     std::size_t voxelCount() const { return voxelCount_; }
     std::size_t byteSize() const { return voxelCount_ * voxelTypeSize(type_); }
     std::size_t index(int i, int j, int k) const {
@@ -81,6 +89,7 @@ public:
     /// Typed access; T must be the storage type (std::uint8_t, std::uint16_t, std::int16_t,
     /// float), else Error.
     template <class T> std::span<T> data() {
+        rangeKnown_.store(false, std::memory_order_release); // the caller may write
         if (auto* v = std::get_if<std::vector<T>>(&storage_)) return {v->data(), v->size()};
         throwTypeMismatch();
     }
@@ -91,10 +100,16 @@ public:
     std::span<std::byte> bytes();
     std::span<const std::byte> bytes() const;
 
-    /// Smallest and largest finite voxel value ({0, 0} when there is none). O(voxelCount).
+    /// Smallest and largest finite voxel value ({0, 0} when there is none). O(voxelCount) the
+    /// first time, then kept until a non-const access (setValue, data(), bytes()) may have
+    /// changed the voxels. A span from data() or bytes() written after this call leaves the
+    /// kept range stale: call a non-const accessor again after such writes.
     std::pair<double, double> minMax() const;
-    /// The range a default transfer function maps to v = 0..1: UByte 0..255, UShort 0..65535,
-    /// Short -32768..32767, Float minMax() of the data.
+    /// The range a transfer function without a dataRange maps to v = 0..1: UByte 0..255 (8-bit
+    /// data spans its type, as windowed CT does, and Inventor's VolumeViz maps it so); UShort
+    /// and Short the data's own minMax() (a 12-bit CT in SHORT spans a sliver of
+    /// -32768..32767, which would render it flat grey), or the type's range for a constant
+    /// grid, which has none of its own; Float minMax().
     std::pair<double, double> naturalRange() const;
 
 protected:
@@ -110,7 +125,13 @@ private:
     glm::ivec3 dimensions_;
     glm::dvec3 spacing_;
     std::size_t voxelCount_;
+    VolumeGeometry geometry_;
     Storage storage_;
+    // minMax() kept between non-const accesses (several engines ask every frame).
+    mutable std::atomic<bool> rangeKnown_{false};
+    mutable std::mutex rangeMutex_;
+    mutable std::pair<double, double> range_{0.0, 0.0};
+    std::pair<double, double> computeMinMax() const;
 };
 
 } // namespace volsg

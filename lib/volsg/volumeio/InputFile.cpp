@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include <volsg/core/Error.h>
+#include <volsg/io/ContainedFile.h>
 
 namespace volsg {
 
@@ -68,9 +69,7 @@ void InputFile::skipLines(std::uint64_t count) {
 }
 
 std::string InputFile::resolveBeside(const std::string& headerPath, const std::string& name) {
-    const std::filesystem::path file(name);
-    if (file.is_absolute()) return name;
-    return (std::filesystem::path(headerPath).parent_path() / file).string();
+    return containedFile(headerPath, name);
 }
 
 void InputFile::fail(const std::string& message, int line) const {

@@ -31,8 +31,8 @@ public:
 
     [[noreturn]] void fail(const std::string& message, int line = 0) const;
 
-    /// `name` as written in the header at `headerPath`: relative names resolve against the
-    /// header's folder.
+    /// `name` as written in the header at `headerPath`, resolved against the header's folder;
+    /// it must lie inside that folder (io/ContainedFile.h), else an Error naming the header.
     static std::string resolveBeside(const std::string& headerPath, const std::string& name);
 
     /// Opens the data file `name` of the header at `headerPath` (resolveBeside); an error

@@ -28,7 +28,37 @@ struct MetaImageHeader {
     std::uint64_t compressedSize = 0; // 0: not given
     std::int64_t headerSize = 0;
     std::string dataFile;
+    bool hasPlacement = false;  ///< Offset or TransformMatrix given
+    glm::dvec3 offset{0.0};     ///< Offset (Position, Origin): voxel 0's centre, LPS
+    glm::dmat3 directions{1.0}; ///< TransformMatrix (Rotation, Orientation), column per axis
 };
+
+// "n n n": three finite numbers.
+glm::dvec3 parseTriple(const std::string& value, const char* what, const HeaderLineReader& lines) {
+    const auto words = HeaderLineReader::splitWords(value);
+    if (words.size() != 3)
+        lines.fail(std::string("expected 3 values in ") + what + ", got " +
+                   std::to_string(words.size()));
+    return {lines.parseNumber(words[0], what), lines.parseNumber(words[1], what),
+            lines.parseNumber(words[2], what)};
+}
+
+// MetaIO writes the matrix row by row, each row the direction of one index axis (ITK's
+// direction matrix transposed); ITK's MetaImages are in LPS.
+glm::dmat3 parseDirections(const std::string& value, const HeaderLineReader& lines) {
+    const auto words = HeaderLineReader::splitWords(value);
+    if (words.size() != 9)
+        lines.fail("expected 9 values in TransformMatrix, got " + std::to_string(words.size()));
+    glm::dmat3 m;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int r = 0; r < 3; ++r)
+            m[axis][r] = lines.parseNumber(words[std::size_t(3 * axis + r)], "TransformMatrix");
+        const double length = glm::length(m[axis]);
+        if (!(length > 0.0)) lines.fail("TransformMatrix has a zero axis");
+        m[axis] /= length;
+    }
+    return m;
+}
 
 VoxelType parseElementType(const std::string& text, const HeaderLineReader& lines) {
     if (text == "MET_UCHAR") return VoxelType::UByte;
@@ -113,6 +143,12 @@ MetaImageHeader parseHeader(HeaderLineReader& lines) {
                 lines.fail("only single-channel volumes are supported, ElementNumberOfChannels "
                            "is " +
                            value);
+        } else if (key == "offset" || key == "position" || key == "origin") {
+            h.offset = parseTriple(value, "Offset", lines);
+            h.hasPlacement = true;
+        } else if (key == "transformmatrix" || key == "rotation" || key == "orientation") {
+            h.directions = parseDirections(value, lines);
+            h.hasPlacement = true;
         } else if (key == "elementdatafile") {
             if (value.empty()) lines.fail("empty ElementDataFile");
             // "LIST" or "name%03d.raw min max step": one file per slice (names may hold spaces).
@@ -124,8 +160,8 @@ MetaImageHeader parseHeader(HeaderLineReader& lines) {
             sawDataFile = true;
             break;
         }
-        // Other keys (Offset, TransformMatrix, CenterOfRotation, AnatomicalOrientation,
-        // ElementMin/Max, ...) say nothing the axis-aligned grid can hold.
+        // Other keys (CenterOfRotation, AnatomicalOrientation, ElementMin/Max, ...) say
+        // nothing the grid holds.
     }
     if (!sawDataFile) lines.fail("MetaImage header has no ElementDataFile line");
     return h;
@@ -168,7 +204,16 @@ ref_ptr<VolumeGrid> readMetaImage(const std::string& path, std::uint64_t byteLim
     } else {
         payload.offset += std::uint64_t(h.headerSize);
     }
-    return readVoxelGrid(path, h.sizesLine, h.sizes, h.type, spacing, byteLimit, data, payload);
+    ref_ptr<VolumeGrid> grid =
+        readVoxelGrid(path, h.sizesLine, h.sizes, h.type, spacing, byteLimit, data, payload);
+    if (h.hasPlacement) {
+        VolumeGeometry geometry;
+        geometry.known = true;
+        geometry.directions = h.directions;
+        geometry.origin = h.offset;
+        grid->setGeometry(geometry);
+    }
+    return grid;
 }
 
 } // namespace volsg

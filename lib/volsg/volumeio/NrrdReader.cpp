@@ -26,6 +26,10 @@ struct NrrdHeader {
     glm::dvec3 spacings{1.0};
     bool hasDirections = false;
     glm::dvec3 directionLengths{1.0};
+    glm::dmat3 directions{1.0}; ///< unit columns, in the header's space
+    bool hasOrigin = false;
+    glm::dvec3 origin{0.0};
+    glm::dvec3 spaceToLps{1.0}; ///< signs turning the header's space into LPS
     std::string dataFile;
     std::int64_t byteSkip = 0;
     std::int64_t lineSkip = 0;
@@ -50,10 +54,23 @@ VoxelType parseType(const std::string& text, const HeaderLineReader& lines) {
                "' (supported: uchar, ushort, short, float)");
 }
 
-// "(x,y,z) (x,y,z) (x,y,z)": the length of each vector is that axis' spacing.
-glm::dvec3 parseDirectionLengths(std::string_view text, const HeaderLineReader& lines) {
-    std::vector<double> lengths;
-    std::size_t components = 0;
+// "(x,y,z)": one vector of 3 components (or of `components` when that is not 0).
+std::vector<double> parseVector(std::string_view inside, const HeaderLineReader& lines,
+                                const char* what) {
+    std::vector<double> out;
+    for (std::size_t start = 0;;) {
+        const std::size_t comma = inside.find(',', start);
+        out.push_back(lines.parseNumber(inside.substr(start, comma - start), what));
+        if (comma == std::string_view::npos) break;
+        start = comma + 1;
+    }
+    return out;
+}
+
+// "(x,y,z) (x,y,z) (x,y,z)": the length of each vector is that axis' spacing, its direction
+// the axis' direction (when the vectors have 3 components).
+void parseDirections(std::string_view text, const HeaderLineReader& lines, NrrdHeader& h) {
+    std::vector<std::vector<double>> vectors;
     std::size_t i = 0;
     while (i < text.size()) {
         if (text[i] == ' ' || text[i] == '\t') {
@@ -61,38 +78,45 @@ glm::dvec3 parseDirectionLengths(std::string_view text, const HeaderLineReader& 
             continue;
         }
         if (text.substr(i, 4) == "none")
-            lines.fail("space direction " + std::to_string(lengths.size() + 1) +
+            lines.fail("space direction " + std::to_string(vectors.size() + 1) +
                        " is 'none': every axis of a 3-dimensional volume needs a direction");
         if (text[i] != '(')
             lines.fail("malformed space directions: expected '(' at '" +
                        std::string(text.substr(i)) + "'");
         const std::size_t close = text.find(')', i);
         if (close == std::string_view::npos) lines.fail("malformed space directions: missing ')'");
-        const std::string_view inside = text.substr(i + 1, close - i - 1);
-        double sum = 0.0;
-        std::size_t count = 0;
-        for (std::size_t start = 0;;) {
-            const std::size_t comma = inside.find(',', start);
-            const double v =
-                lines.parseNumber(inside.substr(start, comma - start), "space direction component");
-            sum += v * v;
-            ++count;
-            if (comma == std::string_view::npos) break;
-            start = comma + 1;
-        }
-        if (components != 0 && count != components)
+        vectors.push_back(
+            parseVector(text.substr(i + 1, close - i - 1), lines, "space direction component"));
+        if (vectors.back().size() != vectors.front().size())
             lines.fail("space directions have different numbers of components");
-        components = count;
+        double sum = 0.0;
+        for (double v : vectors.back())
+            sum += v * v;
         const double length = std::sqrt(sum);
         if (!(length > 0.0) || !std::isfinite(length))
-            lines.fail("space direction " + std::to_string(lengths.size() + 1) +
+            lines.fail("space direction " + std::to_string(vectors.size()) +
                        " has zero length (spacing must be finite and > 0)");
-        lengths.push_back(length);
+        if (vectors.size() <= 3) {
+            h.directionLengths[int(vectors.size()) - 1] = length;
+            if (vectors.back().size() == 3)
+                for (int r = 0; r < 3; ++r)
+                    h.directions[int(vectors.size()) - 1][r] =
+                        vectors.back()[std::size_t(r)] / length;
+        }
         i = close + 1;
     }
-    if (lengths.size() != 3)
-        lines.fail("expected 3 space directions, got " + std::to_string(lengths.size()));
-    return {lengths[0], lengths[1], lengths[2]};
+    if (vectors.size() != 3)
+        lines.fail("expected 3 space directions, got " + std::to_string(vectors.size()));
+    h.hasDirections = true;
+}
+
+// The signs that turn a NRRD space into LPS (DICOM's patient space; VolumeGeometry.h).
+// Non-anatomical spaces (scanner-xyz, 3D-right-handed, ...) are kept as they are.
+glm::dvec3 signsToLps(const std::string& space) {
+    const std::string s = HeaderLineReader::lowercase(space);
+    if (s == "right-anterior-superior" || s == "ras") return {-1, -1, 1};
+    if (s == "left-anterior-superior" || s == "las") return {1, -1, 1};
+    return {1, 1, 1};
 }
 
 // Reads the header up to the blank line (or the end of a detached header).
@@ -155,8 +179,18 @@ NrrdHeader parseHeader(HeaderLineReader& lines, bool& sawBlankLine) {
                 h.spacings[a] = lines.parseSpacing(words[a], "spacing");
             h.hasSpacings = true;
         } else if (field == "space directions") {
-            h.directionLengths = parseDirectionLengths(value, lines);
-            h.hasDirections = true;
+            parseDirections(value, lines, h);
+        } else if (field == "space") {
+            h.spaceToLps = signsToLps(value);
+        } else if (field == "space origin") {
+            const std::string_view v = value;
+            if (v.size() < 2 || v.front() != '(' || v.back() != ')')
+                lines.fail("malformed space origin: expected '(x,y,z)', got '" + value + "'");
+            const auto o = parseVector(v.substr(1, v.size() - 2), lines, "space origin component");
+            if (o.size() == 3) {
+                h.origin = {o[0], o[1], o[2]};
+                h.hasOrigin = true;
+            }
         } else if (field == "data file" || field == "datafile") {
             if (value.empty()) lines.fail("empty data file name");
             // "LIST" or "name%03d.raw min max step": one file per slice (names may hold spaces).
@@ -174,8 +208,7 @@ NrrdHeader parseHeader(HeaderLineReader& lines, bool& sawBlankLine) {
             if (h.lineSkip < 0)
                 lines.fail("line skip must be >= 0, got " + std::to_string(h.lineSkip));
         }
-        // Other fields (kinds, space, space origin, centers, content, ...) say nothing the grid
-        // can hold.
+        // Other fields (kinds, centers, content, ...) say nothing the grid can hold.
     }
     return h;
 }
@@ -220,7 +253,18 @@ ref_ptr<VolumeGrid> readNrrd(const std::string& path, std::uint64_t byteLimit) {
     } else {
         payload.offset += std::uint64_t(h.byteSkip);
     }
-    return readVoxelGrid(path, h.sizesLine, h.sizes, h.type, spacing, byteLimit, data, payload);
+    ref_ptr<VolumeGrid> grid =
+        readVoxelGrid(path, h.sizesLine, h.sizes, h.type, spacing, byteLimit, data, payload);
+    if (h.hasDirections) {
+        VolumeGeometry geometry;
+        geometry.known = true;
+        const glm::dmat3 toLps(glm::dvec3(h.spaceToLps.x, 0, 0), glm::dvec3(0, h.spaceToLps.y, 0),
+                               glm::dvec3(0, 0, h.spaceToLps.z));
+        geometry.directions = toLps * h.directions;
+        geometry.origin = toLps * h.origin;
+        grid->setGeometry(geometry);
+    }
+    return grid;
 }
 
 } // namespace volsg

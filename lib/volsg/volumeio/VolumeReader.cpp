@@ -30,13 +30,22 @@ ref_ptr<VolumeGrid> readRawVolume(const std::string& path, const RawVolumeLayout
 
 ref_ptr<VolumeGrid> readVolume(const std::string& path, const RawVolumeLayout* rawLayout,
                                std::uint64_t byteLimit) {
-    const std::string extension =
-        HeaderLineReader::lowercase(std::filesystem::path(path).extension().string());
-    if (extension == ".nrrd" || extension == ".nhdr") return readNrrd(path, byteLimit);
-    if (extension == ".mhd" || extension == ".mha") return readMetaImage(path, byteLimit);
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return readDicomSeries(path, byteLimit);
+    const std::string name =
+        HeaderLineReader::lowercase(std::filesystem::path(path).filename().string());
+    const auto endsWith = [&](std::string_view tail) {
+        return name.size() >= tail.size() &&
+               name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    if (endsWith(".nrrd") || endsWith(".nhdr")) return readNrrd(path, byteLimit);
+    if (endsWith(".mhd") || endsWith(".mha")) return readMetaImage(path, byteLimit);
+    if (endsWith(".nii") || endsWith(".nii.gz") || endsWith(".hdr") || endsWith(".hdr.gz"))
+        return readNifti(path, byteLimit);
+    if (endsWith(".dcm") || isDicomFile(path)) return readDicomSeries(path, byteLimit);
     if (!rawLayout)
         throw Error("raw volume needs dimensions and dataType (the file is not .nrrd, .nhdr, "
-                    ".mhd or .mha)",
+                    ".mhd, .mha, .nii, .nii.gz or DICOM)",
                     path);
     return readRawVolume(path, *rawLayout, byteLimit);
 }

@@ -1,5 +1,6 @@
 #pragma once
-// Readers for volume files: raw (plain or gzip), NRRD (.nrrd/.nhdr) and MetaImage (.mhd/.mha).
+// Readers for volume files: raw (plain or gzip), NRRD (.nrrd/.nhdr), MetaImage (.mhd/.mha),
+// NIfTI-1/2 (.nii, .nii.gz, .hdr/.img) and DICOM series (a folder, or one file of the series).
 
 #include <cstdint>
 #include <string>
@@ -11,7 +12,8 @@
 
 namespace volsg {
 
-/// What a raw file cannot say about itself (docs/SCENE-FORMAT.md section 3, VolumeData's raw fields).
+/// What a raw file cannot say about itself (docs/SCENE-FORMAT.md section 3, VolumeData's raw
+/// fields).
 struct RawVolumeLayout {
     glm::ivec3 dimensions{0};
     VoxelType type = VoxelType::UByte;
@@ -38,9 +40,9 @@ ref_ptr<VolumeGrid> readRawVolume(const std::string& path, const RawVolumeLayout
 /// relative to the header's folder). Dimension 3 only; encodings raw and gzip (`gz`); types
 /// uchar, ushort, short and float under any of their NRRD spellings; `endian` little or big;
 /// `byte skip` (-1 for raw: data at the end of the file) and `line skip`. Spacing comes from
-/// `spacings` or, failing that, from the lengths of the `space directions` vectors: the
-/// orientation of non-axis-aligned directions is ignored (the grid is axis-aligned).
-/// `kinds`, `space origin` and other informational fields are ignored.
+/// `spacings` or, failing that, from the lengths of the `space directions` vectors. The
+/// directions with `space origin` and `space` (RAS, LAS, LPS; others taken as they are) give
+/// the grid's geometry(), in LPS. `kinds` and other informational fields are ignored.
 ref_ptr<VolumeGrid> readNrrd(const std::string& path,
                              std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
 
@@ -49,12 +51,39 @@ ref_ptr<VolumeGrid> readNrrd(const std::string& path,
 /// MET_UCHAR/MET_USHORT/MET_SHORT/MET_FLOAT, ElementSpacing (or ElementSize),
 /// BinaryDataByteOrderMSB / ElementByteOrderMSB, CompressedData (a zlib stream;
 /// CompressedDataSize optional), HeaderSize (-1: the data is at the end of the file).
-/// Offset and TransformMatrix are ignored (the grid is axis-aligned and centred).
+/// Offset and TransformMatrix (also spelt Position/Origin, Rotation/Orientation) give the
+/// grid's geometry() (MetaIO's space is LPS).
 ref_ptr<VolumeGrid> readMetaImage(const std::string& path,
                                   std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
 
-/// Picks the reader by extension (.nrrd .nhdr .mhd .mha, case-insensitive); any other file is
-/// raw and needs `rawLayout`.
+/// A NIfTI-1 (348-byte header) or NIfTI-2 (540-byte header) volume, either byte order: `.nii`,
+/// `.nii.gz` (the whole file gzip), or a `.hdr` with magic ni1/ni2 and its voxels in the
+/// `.img` (or `.img.gz`) beside it. dim[0] 3 (or more with dims 4.. equal to 1); datatypes
+/// uint8, int16, uint16 and float32. Spacing and geometry() come from the sform when
+/// sform_code > 0, else the qform when qform_code > 0 (quaternion, qfac in pixdim[0]), else
+/// pixdim alone (no geometry); NIfTI's RAS becomes LPS, metres and microns become mm. A
+/// scl_slope other than 0 or 1 (or a scl_inter) turns the voxels into FLOAT
+/// stored * slope + inter.
+ref_ptr<VolumeGrid> readNifti(const std::string& path,
+                              std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
+
+/// A DICOM series through GDCM: `path` is a folder (its largest series) or one file (its
+/// series, from the files in its folder with the same Series Instance UID). Single-frame,
+/// single-sample slices of 8 or 16 bits, any transfer syntax GDCM decodes. The slices are
+/// ordered by Image Position (Patient) along the normal of Image Orientation (Patient) and
+/// must share size, pixel format, orientation and Pixel Spacing and be evenly spaced (1%).
+/// Rescale Slope/Intercept are applied: an integer intercept with slope 1 gives SHORT (CT in
+/// HU), other rescales FLOAT, none the stored type. geometry() is the first slice's position
+/// with the row, column and normal directions (LPS, as DICOM).
+ref_ptr<VolumeGrid> readDicomSeries(const std::string& path,
+                                    std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
+
+/// True when `path` is a DICOM Part 10 file ("DICM" after the 128-byte preamble).
+bool isDicomFile(const std::string& path);
+
+/// Picks the reader: a folder or a DICOM file (by its magic, or .dcm) is a DICOM series;
+/// .nrrd .nhdr .mhd .mha .nii .nii.gz (.hdr with a NIfTI magic) by extension,
+/// case-insensitive; any other file is raw and needs `rawLayout`.
 ref_ptr<VolumeGrid> readVolume(const std::string& path, const RawVolumeLayout* rawLayout = nullptr,
                                std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
 

@@ -8,6 +8,8 @@
 #include <volsg/io/Tokenizer.h>
 #include <volsg/nodes/BuiltinNodes.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <mutex>
 #include <sstream>
@@ -27,6 +29,46 @@ NodeRegistry& registry() {
         addEngineTypes(r);
     });
     return r;
+}
+
+namespace {
+
+// Edit distance (insertions, deletions, substitutions), ignoring case: "volume" is 0 from
+// "Volume", "Volum" 1.
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                              std::tolower(static_cast<unsigned char>(b[j - 1]));
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+} // namespace
+
+std::string nearestTypeName(const std::string& typeName) {
+    // Close enough to be a slip: at most a third of the name's letters (at least 2) differ.
+    std::size_t best = std::max<std::size_t>(2, typeName.size() / 3) + 1;
+    std::string nearest;
+    if (typeName.size() > 64) return nearest;
+    for (const NodeType* type : registry().all()) {
+        if (type->isAbstract()) continue;
+        const std::size_t d = editDistance(typeName, type->name());
+        if (d < best) {
+            best = d;
+            nearest = type->name();
+        }
+    }
+    return nearest;
 }
 
 MadeNode makeNode(const std::string& typeName, bool described, Place place, const FileState& file) {
@@ -61,6 +103,11 @@ MadeNode makeNode(const std::string& typeName, bool described, Place place, cons
             made.error = "unknown node type '" + typeName +
                          "' without a description of its fields (the binary file gives no "
                          "field types for it)";
+        else if (const std::string nearest = nearestTypeName(typeName); !nearest.empty())
+            made.error =
+                "unknown node type '" + typeName + "' (did you mean " + nearest +
+                "? A type this reader does not know must describe its fields: " + typeName +
+                " { fields [ SFFloat a, ... ] ... })";
         else
             made.error =
                 "unknown node type '" + typeName +

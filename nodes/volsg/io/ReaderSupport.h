@@ -22,6 +22,10 @@ namespace reader {
 /// engines (nodes/volsg/engines/EngineTypes.h).
 NodeRegistry& registry();
 
+/// The known node type whose name is nearest to `typeName` (edit distance, ignoring case),
+/// when it is close enough to be a slip; else empty. For "did you mean Volume?".
+std::string nearestTypeName(const std::string& typeName);
+
 /// Where a node is read: a child or a node field's value, or the source of a field
 /// connection (the only place an engine may stand).
 enum class Place { Node, ConnectionSource };

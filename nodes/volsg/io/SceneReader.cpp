@@ -290,6 +290,7 @@ private:
         try {
             node.readDone(file_.context);
         } catch (const Error& e) {
+            if (e.line() > 0) throw; // already at its place (a File's name, an included file)
             tokens_.failAt(typeToken, e.message());
         }
     }

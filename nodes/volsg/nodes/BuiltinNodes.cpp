@@ -3,13 +3,13 @@
 
 #include <mutex>
 
-#include <volsg/nodes/AsciiText.h>
-#include <volsg/nodes/BaseColor.h>
-#include <volsg/nodes/Bindings.h>
 #include <volsg/nodes/Annotation.h>
 #include <volsg/nodes/AppearanceKit.h>
 #include <volsg/nodes/Array.h>
+#include <volsg/nodes/AsciiText.h>
+#include <volsg/nodes/BaseColor.h>
 #include <volsg/nodes/BaseKit.h>
+#include <volsg/nodes/Bindings.h>
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/CameraKit.h>
@@ -47,12 +47,12 @@
 #include <volsg/nodes/NurbsSurface.h>
 #include <volsg/nodes/ObliqueSlice.h>
 #include <volsg/nodes/OrthoSlice.h>
+#include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/PointSet.h>
 #include <volsg/nodes/Profile.h>
 #include <volsg/nodes/ProfileCoordinate2.h>
 #include <volsg/nodes/ProfileCoordinate3.h>
 #include <volsg/nodes/QuadMesh.h>
-#include <volsg/nodes/PickStyle.h>
 #include <volsg/nodes/ResetTransform.h>
 #include <volsg/nodes/Rotation.h>
 #include <volsg/nodes/RotationXYZ.h>
@@ -60,8 +60,8 @@
 #include <volsg/nodes/SceneKit.h>
 #include <volsg/nodes/Selection.h>
 #include <volsg/nodes/Separator.h>
-#include <volsg/nodes/ShapeHints.h>
 #include <volsg/nodes/SeparatorKit.h>
+#include <volsg/nodes/ShapeHints.h>
 #include <volsg/nodes/ShapeKit.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Sphere.h>
@@ -76,11 +76,11 @@
 #include <volsg/nodes/TextureCoordinatePlane.h>
 #include <volsg/nodes/TransferFunction.h>
 #include <volsg/nodes/Transform.h>
-#include <volsg/nodes/TriangleStripSet.h>
-#include <volsg/nodes/VertexProperty.h>
 #include <volsg/nodes/TransformSeparator.h>
 #include <volsg/nodes/Translation.h>
+#include <volsg/nodes/TriangleStripSet.h>
 #include <volsg/nodes/Units.h>
+#include <volsg/nodes/VertexProperty.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeObject.h>

@@ -18,6 +18,7 @@
 
 #include <volsg/actions/Action.h>
 #include <volsg/core/Limits.h>
+#include <volsg/io/BinaryInput.h>
 #include <volsg/io/ReadContext.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/io/Tokenizer.h>
@@ -31,6 +32,10 @@ void FileNameField::setValue(std::string v) {
 }
 
 void FileNameField::read(FieldInput& in) {
+    if (BinaryInput* binary = in.binary()) { // a binary file has no lines to point at
+        setValue(StringTraits::readBinary(*binary));
+        return;
+    }
     const Token& t = in.tokens().peek();
     const int line = t.line, column = t.column;
     setValue(StringTraits::read(in.tokens()));

@@ -3,9 +3,9 @@
 // their faces, whether they are closed solids, whether their faces are convex, and the crease
 // angle below which generated normals are smoothed across faces.
 //
-// Drawing follows Inventor's rules: ordered and SOLID: back faces are culled; otherwise both
-// sides are drawn and lit (volsg lights both sides whatever the ordering: unknown ordering is
-// exactly when a normal may face away from the viewer).
+// Drawing follows Inventor's rules (as Coin's SoShapeHintsElement): ordered and SOLID: back
+// faces are culled; ordered and of unknown shape type: two-sided lighting; unordered: both
+// sides drawn, lit one-sided (a face seen from behind keeps its normal, so it is dark).
 #include <volsg/core/Node.h>
 #include <volsg/fields/Fields.h>
 

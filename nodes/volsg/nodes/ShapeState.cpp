@@ -161,7 +161,9 @@ glm::vec4 materialColor(const ShapeState& s, std::size_t i) {
         out.a = unpackRGBA(at(static_cast<const VertexProperty*>(s.transparency)->orderedRGBA,
                               0xCCCCCCFFu))
                     .a;
-    return out;
+    // Coin keeps diffuse colour and transparency packed in 8-bit RGBA (SoLazyElement), so a
+    // file's diffuseColor 1.7 draws as 1 (legoDog.iv has them).
+    return glm::clamp(out, glm::vec4(0.0f), glm::vec4(1.0f));
 }
 
 VertexAttributes vertexAttributes(const ShapeState& s, VertexArrays& storage) {

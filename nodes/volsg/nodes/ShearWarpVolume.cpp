@@ -8,7 +8,9 @@
 
 #include <volsg/actions/Action.h>
 #include <volsg/io/ReadContext.h>
+#include <volsg/nodes/VolumeObject.h>
 #include <volsg/shearwarp/VoxelListOptimizer.h>
+#include <volsg/volume/VolumeGrid.h>
 
 namespace volsg {
 
@@ -17,6 +19,11 @@ const EnumValues ShearWarpVolume::interObjectNames{{"DVR", DVR}, {"MIP", MIP}};
 ShearWarpVolume::ShearWarpVolume() = default;
 
 ShearWarpVolume::~ShearWarpVolume() = default;
+
+VolumeObject& ShearWarpVolume::wholeVolumeObject() {
+    if (!wholeVolume_) wholeVolume_ = VolumeObject::create();
+    return *wholeVolume_;
+}
 
 void ShearWarpVolume::doAction(Action& action) {
     // The state nodes among the children apply to the objects only.

@@ -86,6 +86,10 @@ public:
     void setLastQuality(const Quality& q) { quality_ = q; }
     /// The error model of `volume` (built when `key` changes; kept for the next frames).
     SlabErrorModel& errorModel(const RayCastVolume& volume, std::uint64_t key);
+    /// The object drawn when the node has no VolumeObject child: WHOLE with every field at its
+    /// default, so a bare ShearWarpVolume shows the whole volume through the transfer function
+    /// in scope, as a Volume would. Made on first use, owned by this node (never a child).
+    VolumeObject& wholeVolumeObject();
 
     /// The folder of the scene file: a relative voxelFile resolves against it.
     const std::string& directory() const { return directory_; }
@@ -109,6 +113,7 @@ private:
     Quality quality_;
     std::unique_ptr<SlabErrorModel> errorModel_;
     std::uint64_t errorModelKey_ = 0;
+    ref_ptr<VolumeObject> wholeVolume_; ///< wholeVolumeObject()
 };
 
 } // namespace volsg

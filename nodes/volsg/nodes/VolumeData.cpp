@@ -1,6 +1,8 @@
 #include <volsg/nodes/VolumeData.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <string>
 
 #include <volsg/actions/Action.h>
@@ -116,6 +118,13 @@ void VolumeData::readDone(const ReadContext& context) {
     directory_ = context.directory;
 }
 
+void VolumeData::adoptLoaded(ref_ptr<const VolumeGrid> data, const std::string& directory) {
+    directory_ = directory;
+    grid_ = std::move(data);
+    tags_ = nullptr;
+    loadedVersion_ = version();
+}
+
 void VolumeData::doAction(Action& action) {
     action.state().add(*this);
 }
@@ -199,6 +208,17 @@ void VolumeData::load() const {
     if (generator() != NONE && !spacing.isDefault()) {
         data->setSpacing(glm::dvec3(spacing()));
         if (tags) tags->setSpacing(glm::dvec3(spacing()));
+    }
+    // Every path normalises values by (v - min) / (max - min) in single precision: finite
+    // FLOAT values whose span is not finite there would all map to 0 (a blank image).
+    if (data->type() == VoxelType::Float) {
+        const auto [low, high] = data->minMax();
+        if (!(high - low <= double(std::numeric_limits<float>::max()))) {
+            char text[96];
+            std::snprintf(text, sizeof text, "FLOAT voxel values span %.3g to %.3g", low, high);
+            throw Error(std::string(text) +
+                        ", wider than single precision holds (3.4e38): rescale the data");
+        }
     }
     if (tags && tags->dimensions() != data->dimensions())
         throw Error("VolumeData tag volume '" + tagFileName() +

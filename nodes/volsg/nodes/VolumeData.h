@@ -58,6 +58,11 @@ public:
     /// The label volume, or null without tagFileName (or a generator without labels).
     virtual ref_ptr<const VolumeGrid> tagGrid() const;
 
+    /// Takes `data`, read already from what the fields name, as this node's voxels (the scene
+    /// built for a data file reads it once: volumescene/SceneForFile.h); `directory` is where
+    /// a relative fileName resolves, as readDone() gives it. A later field change reloads.
+    void adoptLoaded(ref_ptr<const VolumeGrid> data, const std::string& directory);
+
     void readDone(const ReadContext& context) override;
     void doAction(Action& action) override;
 

@@ -3,6 +3,7 @@
 #include <volsg/gl/GlDebug.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/Light.h>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/RenderCache.h>
 #include <volsg/render/RenderTarget.h>
@@ -16,8 +17,9 @@ namespace volsg {
 namespace {
 
 /// Walks the scene as every action does (doAction on each node, so transforms and
-/// separators act) and notes the first Camera with its model matrix and whether any light
-/// is on. Stops as soon as it knows what it was asked for.
+/// separators act) and notes the first Camera with its model matrix, whether any light is on
+/// and whether a ShearWarpVolume is drawn. Stops as soon as it knows what it was asked for (so
+/// the last is known when there is no camera).
 class SceneSurveyAction : public Action {
 public:
     explicit SceneSurveyAction(bool wantLights) : wantLights_(wantLights) {}
@@ -25,6 +27,7 @@ public:
     Camera* camera() const { return camera_.get(); }
     const glm::dmat4& cameraModel() const { return cameraModel_; }
     bool hasLight() const { return hasLight_; }
+    bool hasShearWarpVolume() const { return hasShearWarp_; }
 
 protected:
     void dispatch(Node& node) override {
@@ -33,6 +36,7 @@ protected:
             cameraModel_ = state().modelMatrix();
         }
         if (node.isA<Light>() && static_cast<Light&>(node).on()) hasLight_ = true;
+        if (node.isA<ShearWarpVolume>()) hasShearWarp_ = true;
         node.doAction(*this);
         if (camera_ && (hasLight_ || !wantLights_)) terminate();
     }
@@ -42,10 +46,17 @@ private:
     ref_ptr<Camera> camera_;
     glm::dmat4 cameraModel_{1.0};
     bool hasLight_ = false;
+    bool hasShearWarp_ = false;
 };
 
-SceneCamera makeViewAllCamera(Node& root, double aspect) {
-    ref_ptr<PerspectiveCamera> camera = PerspectiveCamera::create();
+/// The camera of a scene without one: perspective, or orthographic when the scene draws a
+/// ShearWarpVolume (which renders parallel projections only).
+SceneCamera makeViewAllCamera(Node& root, double aspect, bool orthographic) {
+    ref_ptr<Camera> camera;
+    if (orthographic)
+        camera = OrthographicCamera::create();
+    else
+        camera = PerspectiveCamera::create();
     camera->viewAll(computeBoundingBox(root), aspect);
     return {camera, glm::dmat4(1.0)};
 }
@@ -108,7 +119,7 @@ SceneCamera findOrMakeCamera(Node& root, double viewportAspect) {
     SceneSurveyAction survey(false);
     survey.apply(root);
     if (survey.camera()) return {ref_ptr<Camera>(survey.camera()), survey.cameraModel()};
-    return makeViewAllCamera(root, viewportAspect);
+    return makeViewAllCamera(root, viewportAspect, survey.hasShearWarpVolume());
 }
 
 struct Renderer::Impl {
@@ -136,7 +147,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     else if (survey.camera())
         scene = {ref_ptr<Camera>(survey.camera()), survey.cameraModel()};
     else
-        scene = makeViewAllCamera(root, aspect);
+        scene = makeViewAllCamera(root, aspect, survey.hasShearWarpVolume());
     scene.camera->check(scene.model);
 
     RenderView view;
@@ -232,15 +243,30 @@ const RenderStats& Renderer::stats() const {
 }
 
 Image Renderer::render(Node& root, const RenderOptions& options) {
+    Image image;
+    render(root, options, image);
+    return image;
+}
+
+void Renderer::render(Node& root, const RenderOptions& options, Image& into) {
     const BoundFramebuffers caller;
     impl_->drawFrame(root, options);
-    Image image(options.width, options.height);
+    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
+    if (into.pixels.size() != pixels) into.pixels.resize(pixels); // every pixel is read below
+    into.width = options.width;
+    into.height = options.height;
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_FLOAT, image.pixels.data());
-    flipRows(image.pixels, options.width, options.height);
+    // GL's rows run bottom-up, the Image's top-down: Mesa's GL_MESA_pack_invert reads them in
+    // the Image's order (no second pass over the pixels); elsewhere they are swapped after.
+    const bool invert = GLAD_GL_MESA_pack_invert != 0;
+    if (invert) glPixelStorei(GL_PACK_INVERT_MESA, GL_TRUE);
+    glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_FLOAT, into.pixels.data());
+    if (invert)
+        glPixelStorei(GL_PACK_INVERT_MESA, GL_FALSE);
+    else
+        flipRows(into.pixels, options.width, options.height);
     checkGlError("Renderer::render");
-    return image;
 }
 
 void Renderer::renderToBoundFramebuffer(Node& root, const RenderOptions& options) {

@@ -63,6 +63,9 @@ public:
 
     /// Renders offscreen and reads the linear float result back.
     Image render(Node& root, const RenderOptions& options);
+    /// The same into `into`, whose storage is reused when it has the size already (a caller
+    /// rendering frame after frame pays no allocation and no page faults for the image).
+    void render(Node& root, const RenderOptions& options, Image& into);
     /// Renders into the framebuffer bound now (a window's back buffer), same image.
     void renderToBoundFramebuffer(Node& root, const RenderOptions& options);
 
@@ -87,8 +90,9 @@ private:
 };
 
 /// The camera a render of this scene uses: the first Camera in traversal order with the model
-/// matrix above it, or, without one, a new PerspectiveCamera in its default orientation that
-/// views the whole bounding box from +Z (viewAll; model matrix identity).
+/// matrix above it, or, without one, a new camera in its default orientation that views the
+/// whole bounding box from +Z (viewAll; model matrix identity): a PerspectiveCamera, or an
+/// OrthographicCamera when the scene draws a ShearWarpVolume (parallel projections only).
 struct SceneCamera {
     ref_ptr<Camera> camera;
     glm::dmat4 model{1.0};

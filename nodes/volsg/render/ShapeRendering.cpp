@@ -114,6 +114,8 @@ void renderShape(RenderAction& action, Shape& shape) {
         look.cullBackFaces = ordering != ShapeHints::UNKNOWN_ORDERING &&
                              scope.hints->shapeType() == ShapeHints::SOLID;
         look.clockwise = ordering == ShapeHints::CLOCKWISE;
+        look.twoSidedLighting = ordering != ShapeHints::UNKNOWN_ORDERING &&
+                                scope.hints->shapeType() == ShapeHints::UNKNOWN_SHAPE_TYPE;
     }
     look.texturing = texturingOf(frame, scope);
     look.environment = environmentOf(scope.environment);

@@ -73,6 +73,12 @@ std::vector<ObjectScope> scopesOf(ShearWarpVolume& node, const VolumeInScope& vo
             out.push_back({object, std::move(transfer), box});
         }
     }
+    // No VolumeObject: the whole volume, as a Volume draws it (docs/SCENE-FORMAT.md 3.6).
+    if (out.empty()) {
+        ScopedTransfer transfer;
+        if (transfers.count(-1)) transfer = transfers[-1];
+        out.push_back({&node.wholeVolumeObject(), std::move(transfer), box});
+    }
     return out;
 }
 
