@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "CommandLine.h"
+#include "VolumeReport.h"
 #include "bench/BenchRow.h"
 #ifdef VOLSG_BENCH_COIN
 #include "bench/CoinSuite.h"
@@ -23,12 +24,15 @@
 #include "bench/RtvrSuite.h"
 #include "bench/SceneGenerators.h"
 #include "bench/SeriesSuite.h"
+#include "bench/TargetCases.h"
+#include "bench/TargetSweep.h"
 #include "bench/Timing.h"
 #include "bench/VolumeSuite.h"
 #include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/context/Context.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/SceneReader.h>
+#include <volsg/nodes/Volume.h>
 #include <volsg/render/Renderer.h>
 
 namespace {
@@ -58,6 +62,9 @@ const char* usage =
     "       volsg-bench --suite coin [--size WxH] [--frames N] [--cases NAME,...]\n"
     "                   [--models FILE|DIR,...] [--read-back] [--keep DIR]   (built where\n"
     "                   Coin is found; --read-back: volsg's frame reads the float image back)\n"
+    "       volsg-bench --suite volumes|node --sweep [--targets T,T,...] [--sweep-quick]\n"
+    "                   [--before-after]\n"
+    "                   [--large] [--cases NAME,...] [--reference-dir DIR] [--csv FILE]\n"
     "       every form also takes the debug switches [--no-empty-cells]\n"
     "                   [--no-texture-staging] [--max-3d-texture N] [--scalar-kernels]\n"
     "                   [--byte-target] [--no-render-caching] [--no-batching]\n"
@@ -78,6 +85,14 @@ const char* usage =
     "                  rows' Volume.samplesPerPlane (default 1); --no-mip-peaks: the MIP rows\n"
     "                  with Volume.mipPeaks FALSE\n"
     "  --reference-dir keep the reference images there and reuse them on later runs\n"
+    "  --sweep         error targets (Volume.errorTarget): per case a grid of fixed settings,\n"
+    "                  the fastest that meets each target against the default at that target,\n"
+    "                  and the error model's prediction against the measured error of each\n"
+    "                  (--suite volumes: the sweep's own cases, 4 views, 2 compared; --large\n"
+    "                  adds 128^3 and the 256^3 at 512x512; --suite node: its cases, DVR and\n"
+    "                  MIP). --targets in 1/255 (default 0.5,0.25,2; the first is the\n"
+    "                  default's), --sweep-quick: a coarser grid, --before-after: no grid,\n"
+    "                  the old fixed rule (errorTarget 0) and the defaults only\n"
     "  --export-views  write the cameras, volumes and transfer functions of the node suite\n"
     "                  for viewer/vtk/vtk_volume_bench.py into DIR, and stop\n"
     "  --compare DIR   add VTK's rows (DIR/vtk-results.tsv and its PFM frames, written by\n"
@@ -123,6 +138,8 @@ struct Settings {
     bool mipPeaks = true;
     std::string scenesDir = VOLSG_BENCH_SCENES_DIR;
     std::string referenceDir, exportDir, compareDir, rowsCsv;
+    bool sweep = false, sweepQuick = false, large = false, beforeAfter = false;
+    std::vector<double> targets;
     RenderOptions options;
     bool sizeGiven = false;
     Backend backend = Backend::OSMesa;
@@ -135,7 +152,8 @@ void printRow(const char* what, const bench::Samples& s, const char* unit = "ms/
 
 /// Times the orbit views; keeps the images of the views listed in views.errorIndices.
 bench::Samples orbitFrames(Renderer& renderer, Node& root, const RenderOptions& base,
-                           const bench::OrbitViews& views, std::vector<Image>* kept = nullptr) {
+                           const bench::OrbitViews& views, std::vector<Image>* kept = nullptr,
+                           std::vector<std::vector<double>>* predicted = nullptr) {
     RenderOptions options = base;
     options.camera = views.cameras[0];
     renderer.render(root, options); // warm-up: shader compiles and uploads are not frames
@@ -147,6 +165,7 @@ bench::Samples orbitFrames(Renderer& renderer, Node& root, const RenderOptions& 
         samples.ms.push_back(bench::timeMs([&] { image = renderer.render(root, options); }));
         if (kept && next < views.errorIndices.size() && views.errorIndices[next] == int(i)) {
             kept->push_back(std::move(image));
+            if (predicted) predicted->push_back(cli::predictedErrors(root));
             ++next;
         }
     }
@@ -215,12 +234,16 @@ int sceneBenchmark(const Settings& st) {
     const bench::OrbitViews views =
         bench::makeOrbitViews(*root, st.options, st.frames, st.error ? st.errorFrames : 0);
     std::vector<Image> images;
-    const bench::Samples samples = orbitFrames(renderer, *root, st.options, views, &images);
+    std::vector<std::vector<double>> predicted; // per error view, per volume node
+    const bench::Samples samples =
+        orbitFrames(renderer, *root, st.options, views, &images, &predicted);
     char what[160];
     std::snprintf(what, sizeof what, "%s %dx%d %s%s", st.scene.c_str(), st.options.width,
                   st.options.height, st.backend == Backend::EGL ? "egl" : "osmesa",
                   st.options.interactive ? " interactive" : "");
     printRow(what, samples);
+    for (const std::string& line : cli::volumeQualityLines(*root)) // the last view's
+        std::printf("  %s\n", line.c_str());
 
     bench::BenchRow row;
     row.scene = std::filesystem::path(st.scene).stem().string();
@@ -243,6 +266,24 @@ int sceneBenchmark(const Settings& st) {
                     "  error vs reference", images.size(), row.rmse, row.psnr, row.maxAbs,
                     reference.ms.median(), reference.errorBound,
                     reference.converged ? "" : ", not converged everywhere");
+        // The error model's prediction over the same views (RMS over them), per volume node;
+        // with one volume in the scene it is the image's, comparable with the measured RMSE.
+        if (!predicted.empty())
+            for (std::size_t v = 0; v < predicted.front().size(); ++v) {
+                double squares = 0.0;
+                bool all = true;
+                for (const auto& perView : predicted) {
+                    all = all && perView[v] >= 0.0;
+                    squares += perView[v] * perView[v];
+                }
+                if (all)
+                    std::printf("  volume #%zu: predicted RMSE %.3g/255, measured %.3g/255 (the "
+                                "whole image)\n",
+                                v + 1, std::sqrt(squares / double(predicted.size())) * 255.0,
+                                row.rmse * 255.0);
+                else
+                    std::printf("  volume #%zu: no prediction\n", v + 1);
+            }
         bench::BenchRow refRow;
         refRow.scene = row.scene;
         refRow.path = "reference";
@@ -328,6 +369,55 @@ int nodeSuite(const Settings& st) {
     return 0;
 }
 
+/// --sweep: the error targets against a grid of fixed settings (lib/volsg/slicing/README.md).
+int sweepSuite(const Settings& st) {
+    bench::SweepSettings sw;
+    if (!st.targets.empty()) sw.targets = st.targets;
+    sw.quick = st.sweepQuick;
+    sw.beforeAfter = st.beforeAfter;
+    std::vector<bench::BenchRow> rows;
+    std::vector<bench::SweepLine> lines;
+    std::vector<bench::ValidationLine> validation;
+    const auto wanted = [&](const std::string& name) {
+        return st.cases.empty() ||
+               std::find(st.cases.begin(), st.cases.end(), name) != st.cases.end();
+    };
+    auto context = Context::createOffscreen(st.backend);
+    bench::printHeader();
+    if (st.suite == "volumes") {
+        const std::string dataDir =
+            st.keepDir.empty()
+                ? (std::filesystem::temp_directory_path() / "volsg-bench-sweep").string()
+                : st.keepDir;
+        for (const bench::TargetCaseSpec& spec : bench::targetCaseSpecs(dataDir, st.large)) {
+            if (!wanted(spec.name)) continue;
+            bench::SweepCase c = bench::loadTargetCase(spec, st.options.debug, st.referenceDir);
+            c.options.background = st.options.background;
+            const auto r = bench::runTargetSweep(c, sw, lines, validation);
+            rows.insert(rows.end(), r.begin(), r.end());
+        }
+    } else {
+        bench::NodeSuiteSettings ns;
+        if (st.sizeGiven) {
+            ns.width = st.options.width;
+            ns.height = st.options.height;
+        }
+        if (st.framesGiven) ns.frames = st.frames;
+        if (st.errorFramesGiven) ns.errorFrames = st.errorFrames;
+        ns.errorFrames = std::min(ns.errorFrames, ns.frames);
+        if (st.tolerance > 0.0) ns.tolerance = st.tolerance;
+        ns.debug = st.options.debug;
+        ns.scenesDir = st.scenesDir;
+        ns.cases = st.cases;
+        ns.kinds = st.kinds;
+        ns.referenceDir = st.referenceDir;
+        rows = bench::runNodeSweep(ns, sw, lines, validation);
+    }
+    bench::printSweepTables(lines, validation);
+    writeOutputs(st, rows, "volsg-bench error-target sweep: RMSE against the reference vs time");
+    return 0;
+}
+
 int run(cli::Arguments& args) {
     Settings st;
     const auto list = [](std::vector<std::string>& target) {
@@ -354,6 +444,15 @@ int run(cli::Arguments& args) {
         .flag("--no-mip-peaks", st.mipPeaks, false)
         .text("--scenes", st.scenesDir)
         .text("--reference-dir", st.referenceDir)
+        .flag("--sweep", st.sweep)
+        .flag("--sweep-quick", st.sweepQuick)
+        .flag("--before-after", st.beforeAfter)
+        .flag("--large", st.large)
+        .value("--targets",
+               [&](const std::string& v) {
+                   for (const std::string& t : splitList(v))
+                       st.targets.push_back(parsePositive(t, "--targets"));
+               })
         .text("--export-views", st.exportDir)
         .text("--compare", st.compareDir)
         .text("--rows", st.rowsCsv)
@@ -383,6 +482,7 @@ int run(cli::Arguments& args) {
     if (!table.read(args, usage, scene)) return 0;
     if (st.scene.empty() == st.suite.empty()) return cli::usageError(usage);
     if (!st.scene.empty()) return sceneBenchmark(st);
+    if (st.sweep && (st.suite == "volumes" || st.suite == "node")) return sweepSuite(st);
     if (st.suite == "volumes") {
         bench::VolumeSuiteSettings vs;
         if (st.sizeGiven) {

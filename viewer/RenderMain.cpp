@@ -6,6 +6,7 @@
 
 #include "CommandLine.h"
 #include "TerminalProgress.h"
+#include "VolumeReport.h"
 #include <volsg/context/Context.h>
 #include <volsg/core/Error.h>
 #include <volsg/engines/Evaluator.h>
@@ -26,7 +27,7 @@ const char* usage =
     "   writes that scene)\n"
     "                    [--background R,G,B] [--reference [--tolerance T]]\n"
     "                    [--stereo anaglyph|side-by-side [--eye-separation F]]\n"
-    "                    [--interactive]\n"
+    "                    [--interactive] [--verbose]\n"
     "  --reference   render the volumes with the CPU reference ray caster (docs/SCENE-FORMAT.md\n"
     "                section 4) over GL's opaque geometry; prints the error bound reached\n"
     "  --tolerance   the reference's per-pixel convergence tolerance (default 1e-4)\n"
@@ -39,6 +40,8 @@ const char* usage =
     "  --interactive the frame the viewer draws while the user drags: volumes use their\n"
     "                interactive settings (Volume.interactivePlanes,\n"
     "                ShearWarpVolume.interactiveSliceStep)\n"
+    "  --verbose     print per volume node the settings it drew with and the error it predicts\n"
+    "                against the rendering model (Volume.errorTarget)\n"
     "%s";
 
 double parseTime(const std::string& text) {
@@ -61,7 +64,7 @@ int run(volsg::cli::Arguments& args) {
     std::string scene, output;
     volsg::RenderOptions options;
     volsg::Backend backend = volsg::Backend::OSMesa;
-    bool reference = false;
+    bool reference = false, verbose = false;
     volsg::RayCastOptions rayOptions;
     volsg::StereoOptions stereo;
     volsg::OpenFileOptions open;
@@ -74,6 +77,7 @@ int run(volsg::cli::Arguments& args) {
         .color("--background", options.background)
         .flag("--reference", reference)
         .flag("--interactive", options.interactive)
+        .flag("--verbose", verbose)
         .value("--tolerance",
                [&](const std::string& v) { rayOptions.tolerance = parseTolerance(v); })
         .value("--time", [&](const std::string& v) { time = parseTime(v); })
@@ -120,6 +124,9 @@ int run(volsg::cli::Arguments& args) {
     const volsg::Image image = volsg::renderStereo(renderer, *root, options, stereo);
     progress.stage(0.95, "writing " + output);
     volsg::writeImage(output, image);
+    if (verbose)
+        for (const std::string& line : volsg::cli::volumeQualityLines(*root))
+            std::printf("%s\n", line.c_str());
     return 0;
 }
 

@@ -30,6 +30,7 @@ TEST_CASE_FIXTURE(GlFixture,
         transferFunction({{0, 0}, {0.2, 0.05}, {1, 0.6}}, {{0, 1}, {1, 0.2}}, {{0, 0.3}, {1, 0.9}});
     setNodeFields(*tf, function);
     auto volume = Volume::create();
+    volume->errorTarget = 0.0f; // the fixed rule this test checks (ErrorTargetTest: targets)
     root->addChild(data);
     root->addChild(tf);
     root->addChild(volume);

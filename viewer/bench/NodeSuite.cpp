@@ -624,6 +624,39 @@ void exportNodeSuiteViews(const NodeSuiteSettings& st, const std::string& dir) {
     std::printf("wrote %s\n", file.string().c_str());
 }
 
+std::vector<BenchRow> runNodeSweep(const NodeSuiteSettings& st, const SweepSettings& sweep,
+                                   std::vector<SweepLine>& lines,
+                                   std::vector<ValidationLine>& validation) {
+    std::vector<BenchRow> rows;
+    for (const NodeCase& nc : kCases) {
+        if (!st.cases.empty() &&
+            std::find(st.cases.begin(), st.cases.end(), nc.name) == st.cases.end())
+            continue;
+        LoadedCase c = loadCase(nc, st);
+        for (const int mode : {int(Volume::DVR), int(Volume::MIP)}) {
+            const char* kind = mode == Volume::DVR ? "dvr" : "mip";
+            if (!st.kinds.empty() &&
+                std::find(st.kinds.begin(), st.kinds.end(), kind) == st.kinds.end())
+                continue;
+            Reference ref = referenceOf(c, mode, st);
+            SweepCase sc;
+            sc.name = c.name + "-" + kind;
+            sc.root = c.root;
+            sc.volume = c.volume;
+            sc.views = c.views;
+            sc.options = suiteOptions(st);
+            sc.options.background = st.background;
+            sc.reference = std::move(ref.images);
+            sc.diagonalL0 = c.diagonalInL0;
+            c.volume->renderMode = mode;
+            c.volume->lighting = false;
+            const auto r = runTargetSweep(sc, sweep, lines, validation);
+            rows.insert(rows.end(), r.begin(), r.end());
+        }
+    }
+    return rows;
+}
+
 std::vector<BenchRow> runNodeSuite(const NodeSuiteSettings& st) {
     auto context = Context::createOffscreen(st.backend);
     std::printf("%s backend, GL renderer: %s\n", context->backendName().c_str(),

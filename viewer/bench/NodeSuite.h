@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "BenchRow.h"
+#include "TargetSweep.h"
 #include <volsg/context/Context.h>
 #include <volsg/render/FrameContext.h>
 
@@ -52,6 +53,12 @@ struct NodeSuiteSettings {
 /// drawn and skipped, texture memory, and RMSE/PSNR/max against the reference on
 /// `errorFrames` of the views. With compareDir, VTK's rows and the equal-error table follow.
 std::vector<BenchRow> runNodeSuite(const NodeSuiteSettings& settings);
+
+/// The error-target sweep (TargetSweep.h) on the suite's cases, DVR and MIP (`kinds`: "dvr",
+/// "mip"), with the reference images of referenceOf (kept in referenceDir).
+std::vector<BenchRow> runNodeSweep(const NodeSuiteSettings& settings, const SweepSettings& sweep,
+                                   std::vector<SweepLine>& lines,
+                                   std::vector<ValidationLine>& validation);
 
 /// Writes what viewer/vtk/vtk_volume_bench.py needs to render the same frames into `dir`:
 /// views.json (image size, background, and per case the volume's raw file, dimensions,

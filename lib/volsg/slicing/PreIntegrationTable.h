@@ -27,6 +27,10 @@ class PreIntegrationTable {
 public:
     static constexpr int kSize = 256;
     static constexpr int kIntegrationSteps = 16384;
+    /// Transfer-table rows that get a table (the slicer stacks them in one 2D texture of
+    /// kSize x kSize * rows, 1 MB each); a volume with more tagged functions is not
+    /// pre-integrated.
+    static constexpr int kMaxRows = 64;
 
     void build(const TransferFunction1D& function);
     /// kSize * kSize RGBA texels, row = v_back index, column = v_front index.

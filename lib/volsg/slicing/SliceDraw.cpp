@@ -154,7 +154,10 @@ void bindTables(FrameContext& frame, SliceShared& shared, const VolumeTextures& 
     }
     v.tableTexture.bind(kTableUnit);
     if (method.tagged) v.tagRowTexture.bind(kTagRowUnit);
-    if (method.preIntegrated) v.preIntegrationTexture.bind(kPreIntegratedUnit);
+    if (method.preIntegrated) {
+        v.preIntegrationTexture.bind(kPreIntegratedUnit);
+        program.set("uPreRows", int(v.preIntegration.size()));
+    }
     if (method.hasPlaneOpacity) v.planeOpacityTexture.bind(kPlaneOpacityUnit);
 }
 

@@ -151,6 +151,10 @@ LocalView localView(const RenderView& view, const glm::dmat4& model, const Volum
     return local;
 }
 
+QualityView qualityView(const LocalView& local, const RenderView& view) {
+    return qualityViewOf(local.modelView, view.projection, local.halfExtent, local.L0);
+}
+
 PlaneLayout planeLayout(const LocalView& local, const SlicingSettings& settings, int slabSamples,
                         const FrameContext& frame) {
     // Plane count: numPlanes, or 2 per voxel (spacing L0 / 2 in local units along the view
@@ -158,13 +162,17 @@ PlaneLayout planeLayout(const LocalView& local, const SlicingSettings& settings,
     const double localPerEyeAxis = glm::length(local.eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0));
     const double depthExtent = local.boxDepth.y - local.boxDepth.x;
     const double autoSpacing = 0.5 * local.L0 / localPerEyeAxis;
-    long still = settings.numPlanes > 0
-                     ? long(settings.numPlanes)
-                     : long(std::ceil(depthExtent / (autoSpacing * double(slabSamples))));
-    still = std::clamp(still, 1L, long(kMaxPlanes));
+    const bool chosen = settings.numPlanes <= 0 && settings.planeSpacingL0 > 0.0;
+    const double wanted = chosen ? settings.planeSpacingL0 * local.L0 / localPerEyeAxis
+                                 : autoSpacing * double(slabSamples);
+    const double count =
+        settings.numPlanes > 0 ? double(settings.numPlanes) : std::ceil(depthExtent / wanted);
+    long still = long(std::clamp(count, 1.0, double(kMaxPlanes)));
     long planes = still;
     if (frame.interactive) {
+        // A spacing chosen for this frame is the interactive target's already.
         planes = settings.interactivePlanes > 0 ? long(settings.interactivePlanes)
+                 : chosen                       ? still
                                                 : std::max(1L, (still + 3) / 4);
         // The viewer lowers this further when interactive frames are too slow, but not below
         // kMinScaledPlanes: with two or three planes the slab boundaries show as seams.

@@ -7,6 +7,7 @@
 
 #include <volsg/render/FrameContext.h>
 #include <volsg/slicing/SlicePlan.h>
+#include <volsg/slicing/SlicingQuality.h>
 #include <volsg/slicing/SlicingStats.h>
 #include <volsg/slicing/VolumeSlicer.h>
 #include <volsg/slicing/VolumeTextures.h>
@@ -16,8 +17,15 @@ namespace volsg::slicing {
 /// The view of `frame` in the local coordinates of a volume with this model matrix and grid.
 LocalView localView(const RenderView& view, const glm::dmat4& model, const VolumeGrid& grid);
 
-/// The planes over the volume box's depth range: numPlanes, or 2 per voxel along the view axis
-/// (fewer with several samples per plane); a quarter while interacting, scaled by the viewer.
+/// The view as the error model sees it: the view axis and the box's depth along it in L0, the
+/// share of pixels whose rays cross the box (a 24 x 24 grid of pixel rays) and how much longer
+/// than the view depth they run through a slab (perspective).
+QualityView qualityView(const LocalView& local, const RenderView& view);
+
+/// The planes over the volume box's depth range: numPlanes, or settings.planeSpacingL0 (chosen
+/// from an error target), or 2 per voxel along the view axis (fewer with several samples per
+/// plane); while interacting interactivePlanes, or the spacing chosen for the interactive
+/// target, or a quarter; scaled by the viewer.
 PlaneLayout planeLayout(const LocalView& local, const SlicingSettings& settings, int slabSamples,
                         const FrameContext& frame);
 

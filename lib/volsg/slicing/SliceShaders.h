@@ -55,7 +55,10 @@ out vec4 fragColor;
 uniform sampler3D uData;
 uniform usampler3D uTags;
 uniform usampler2D uTagRows;      // tag -> row, 256 x 256
-uniform sampler2D uPreIntegrated; // (mean colour, mean optical depth per L0) over (v_front, v_back)
+// (mean colour, mean optical depth per L0) over (v_front, v_back): one PRE_SIZE x PRE_SIZE table
+// per transfer-table row, stacked along y (uPreRows of them).
+uniform sampler2D uPreIntegrated;
+uniform int uPreRows;
 uniform sampler1D uPlaneOpacity;  // m(t), PLANE_OPACITY_SIZE samples over t in [0, 1]
 uniform sampler2D uOpaqueDepth;   // a copy of the opaque pass's depth (window depth, 0..1)
 uniform usampler3D uCells;        // 1 per cell of EmptyCells::kCellSize^3 voxels that may emit
@@ -204,6 +207,47 @@ void classifySlab(vec3 origin, vec3 dir, float front, float back, out vec3 color
     tauL0 = thickness > 0.0 ? depthSum / thickness : 0.0;
     color = depthSum > 0.0 ? emitted / depthSum : fallback;
 }
+#endif
+
+#ifdef PREINTEGRATED
+// Row `row`'s segment from v_front to v_back (texel centres at v = i / (PRE_SIZE - 1); a row's
+// last texel centre is its own, so the filter never mixes two rows).
+vec4 preIntegratedSegment(int row, float vFront, float vBack) {
+    vec2 t = vec2(vFront, vBack) * float(PRE_SIZE - 1) + 0.5;
+    t.y += float(row * PRE_SIZE);
+    return texture(uPreIntegrated, t / vec2(float(PRE_SIZE), float(PRE_SIZE * uPreRows)));
+}
+#ifdef TAGGED
+// classifySlab's pre-integrated counterpart: the slab [x - front dir, x + back dir] cut at the
+// faces of the tag cell around x, each piece pre-integrated with its own row between the data
+// at its two ends (the tau-weighted mean colour and the mean optical depth per L0).
+void preIntegrateSlab(vec3 x, vec3 dir, float front, float back, out vec3 color,
+                      out float tauL0) {
+    vec3 u0 = voxelCoord(x);
+    vec3 cell = clamp(floor(u0), vec3(0.0), uVoxelCount - 1.0);
+    vec2 inCell = slabInterval(u0, dir * uInvSpacing, cell, cell + 1.0);
+    float cut[4] = float[4](-front, clamp(inCell.x, -front, back), 0.0, back);
+    cut[2] = clamp(inCell.y, cut[1], back);
+    vec3 emitted = vec3(0.0);
+    float depthSum = 0.0;
+    vec3 fallback = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        float length = cut[i + 1] - cut[i];
+        if (!(length > 0.0) && i != 1) continue;
+        int row = rowAt(x + dir * (0.5 * (cut[i] + cut[i + 1])));
+        vec2 range = rangeOf(row);
+        vec4 segment = preIntegratedSegment(row, normalised(dataAt(texCoord(x + dir * cut[i])), range),
+                                            normalised(dataAt(texCoord(x + dir * cut[i + 1])), range));
+        float tau = segment.a * max(length, 0.0);
+        emitted += tau * segment.rgb;
+        depthSum += tau;
+        if (i == 1) fallback = segment.rgb;
+    }
+    float thickness = front + back;
+    tauL0 = thickness > 0.0 ? depthSum / thickness : 0.0;
+    color = depthSum > 0.0 ? emitted / depthSum : fallback;
+}
+#endif
 #endif
 
 float planeOpacityAt(float t) {
@@ -513,12 +557,19 @@ void main() {
 #endif
         vec3 tc = texCoord(x);
 #ifdef PREINTEGRATED
+#ifdef TAGGED
+        vec3 C;
+        float tauL0;
+        float tX = parts == 1 && !uFacePass ? 0.0 : middle; // where x is on the ray
+        preIntegrateSlab(x, dir, tX - a, b - tX, C, tauL0);
+        float D = tauL0 * weighted * uInvL0;
+#else
         float vFront = normalised(dataAt(texCoord(origin + dir * a)), rangeX);
         float vBack = normalised(dataAt(texCoord(origin + dir * b)), rangeX);
-        vec4 segment = texture(uPreIntegrated, (vec2(vFront, vBack) * float(PRE_SIZE - 1) + 0.5) /
-                                                   float(PRE_SIZE));
+        vec4 segment = preIntegratedSegment(0, vFront, vBack);
         vec3 C = segment.rgb;
         float D = segment.a * weighted * uInvL0;
+#endif
 #else
         vec3 C;
         float tauL0;

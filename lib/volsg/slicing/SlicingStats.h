@@ -39,6 +39,19 @@ struct SlicingStats {
     /// Wall time of issuing the GL work: brick uploads, uniforms, draws (including any wait
     /// in the driver; llvmpipe may block here on earlier rendering).
     double submitMilliseconds = 0.0;
+    /// The frame's quality: what was drawn (chosen from the error target where the fields
+    /// left it automatic) and the error the model predicts for it against the reference
+    /// (lib/volsg/slicing/SlabErrorModel.h). predictedRmse < 0: not predicted (AVERAGE,
+    /// NEAREST, no target).
+    int samplesPerPlane = 1;
+    bool preIntegrated = false;
+    bool mipPeaks = false;
+    double planeSpacingL0 = 0.0;      ///< plane spacing along the view, in L0
+    double errorTarget = 0.0;         ///< the target this frame was chosen for (0..1 units)
+    double predictedRmse = -1.0;      ///< per channel, 0..1 units
+    bool meetsTarget = true;          ///< the prediction is within the target
+    double coverage = 0.0;            ///< share of the image's pixels whose rays cross the box
+    double qualityMilliseconds = 0.0; ///< CPU time of the choice (part of cpuMilliseconds)
 
     // Cumulative.
     std::uint64_t frames = 0;

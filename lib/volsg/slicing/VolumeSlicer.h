@@ -28,6 +28,19 @@ struct SlicingSettings {
     std::uint64_t textureBudget = 0;
     /// Skip the cells of 8^3 voxels that cannot emit (RenderDebug::skipEmptyCells).
     bool skipEmptyCells = true;
+    /// Error targets (RMSE per channel of the image, 0..1 units) for still and interactive
+    /// frames; 0: no target, the automatic settings are the fixed rules of numPlanes etc. With
+    /// a target, the settings not marked fixed below are chosen per frame as the cheapest whose
+    /// predicted error meets it (SlicingQuality.h); numPlanes > 0 and interactivePlanes > 0 fix
+    /// the plane counts.
+    double errorTarget = 0.0;
+    double interactiveErrorTarget = 0.0;
+    bool fixedSamplesPerPlane = false;
+    bool fixedPreIntegrated = false;
+    bool fixedMipPeaks = false;
+    /// Plane spacing along the view in L0 (set by the slicer from the target): replaces the
+    /// automatic plane count when numPlanes is 0; for this frame, interactive or not.
+    double planeSpacingL0 = 0.0;
     glm::vec3 specular{0.0f}; ///< lighting: the Material's specular colour
     float shininess = 0.2f;   ///< lighting: the Material's shininess (Inventor, 0..1)
 };

@@ -135,11 +135,21 @@ void prepareCells(VolumeTextures& v, int kind) {
 
 void preparePreIntegration(VolumeTextures& v) {
     if (v.hasPreIntegration) return;
-    v.preIntegration.build(v.table.function(0));
+    // One table per row (tagged functions pre-integrate each tag-cell piece with its own),
+    // stacked along y in one texture.
+    const int rows = std::min(v.table.rows(), PreIntegrationTable::kMaxRows);
+    v.preIntegration.resize(std::size_t(rows));
+    std::vector<float> texels;
+    texels.reserve(std::size_t(rows) * PreIntegrationTable::kSize * PreIntegrationTable::kSize * 4);
+    for (int r = 0; r < rows; ++r) {
+        v.preIntegration[std::size_t(r)].build(v.table.function(r));
+        const std::vector<float>& t = v.preIntegration[std::size_t(r)].texels();
+        texels.insert(texels.end(), t.begin(), t.end());
+    }
     if (!v.preIntegrationTexture) v.preIntegrationTexture = Texture(GL_TEXTURE_2D);
     v.preIntegrationTexture.image2D(GL_RGBA32F, PreIntegrationTable::kSize,
-                                    PreIntegrationTable::kSize, GL_RGBA, GL_FLOAT,
-                                    v.preIntegration.texels().data());
+                                    PreIntegrationTable::kSize * rows, GL_RGBA, GL_FLOAT,
+                                    texels.data());
     v.hasPreIntegration = true;
     ++v.totals.preIntegrationBuilds;
 }

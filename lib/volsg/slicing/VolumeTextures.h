@@ -18,6 +18,7 @@
 #include <volsg/slicing/EmptyCells.h>
 #include <volsg/slicing/PreIntegrationTable.h>
 #include <volsg/slicing/ProxyPlaneCutter.h>
+#include <volsg/slicing/SlabErrorModel.h>
 #include <volsg/slicing/SlicingStats.h>
 #include <volsg/slicing/TextureStaging.h>
 #include <volsg/slicing/TransferTable.h>
@@ -82,8 +83,13 @@ struct VolumeTextures {
     std::uint64_t rowsTableKey = 0;
     int rowsKind = -1;
 
+    /// The error model of this grid under the current transfer functions and mode.
+    std::unique_ptr<SlabErrorModel> errorModel;
+    std::uint64_t errorModelKey = 0;
+    int errorModelMode = -1;
+
     bool hasPreIntegration = false;
-    PreIntegrationTable preIntegration;
+    std::vector<PreIntegrationTable> preIntegration; ///< one per transfer-table row
     Texture preIntegrationTexture;
 
     std::vector<PiecewiseLinear::Point> planeOpacity;

@@ -32,6 +32,14 @@ void ShearWarpVolume::doAction(Action& action) {
     action.state().pop();
 }
 
+SlabErrorModel& ShearWarpVolume::errorModel(const RayCastVolume& volume, std::uint64_t key) {
+    if (!errorModel_ || errorModelKey_ != key) {
+        errorModel_ = std::make_unique<SlabErrorModel>(volume);
+        errorModelKey_ = key;
+    }
+    return *errorModel_;
+}
+
 int ShearWarpVolume::sliceStepFor(bool interactive, double interactivePlaneScale) const {
     constexpr int maximumStep = 16;
     if (!interactive) return 1;

@@ -9,6 +9,7 @@
 #include <volsg/fields/Fields.h>
 #include <volsg/nodes/Group.h>
 #include <volsg/shearwarp/ShearWarpRenderer.h>
+#include <volsg/slicing/SlabErrorModel.h>
 
 namespace volsg {
 
@@ -28,6 +29,12 @@ public:
     /// = interactiveSliceStep divided by the viewer's interactive plane scale (at most 16).
     /// SURFACE objects keep every slice. 1: full quality while interacting too.
     SFInt32 interactiveSliceStep{this, "interactiveSliceStep", 2};
+    /// RMSE per channel, in 1/255, against the rendering model: still frames draw every slice
+    /// (the error there is shear-warp's floor, reported); while interacting the slice step is
+    /// the largest whose predicted error meets interactiveErrorTarget, unless
+    /// interactiveSliceStep is set. Predicted for DVR of transfer-function objects only.
+    SFFloat errorTarget{this, "errorTarget", 0.5f};
+    SFFloat interactiveErrorTarget{this, "interactiveErrorTarget", 2.0f};
     /// Pure MIP scenes (every object MIP, MIP between them, nothing clipped, no opaque
     /// geometry) draw value-sorted voxels onto their nearest pixel, with no maximum search.
     /// FALSE: the general path, which resamples each slice bilinearly (slower, a little closer
@@ -67,6 +74,18 @@ public:
     /// interactiveSliceStep / interactivePlaneScale rounded, in [1, 16].
     int sliceStepFor(bool interactive, double interactivePlaneScale) const;
 
+    /// The last frame's error: predicted by the error model (lib/volsg/slicing/SlabErrorModel.h)
+    /// for the slice step used, and at step 1 (shear-warp's floor: one sample per slice,
+    /// classification before resampling), against the frame's target (0..1 units).
+    struct Quality {
+        bool predicted = false;
+        int sliceStep = 1;
+        double predictedRmse = 0.0, floorRmse = 0.0, target = 0.0;
+    };
+    const Quality& lastQuality() const { return quality_; }
+    void setLastQuality(const Quality& q) { quality_ = q; }
+    /// The error model of `volume` (built when `key` changes; kept for the next frames).
+    SlabErrorModel& errorModel(const RayCastVolume& volume, std::uint64_t key);
     /// The object drawn when the node has no VolumeObject child: WHOLE with every field at its
     /// default, so a bare ShearWarpVolume shows the whole volume through the transfer function
     /// in scope, as a Volume would. Made on first use, owned by this node (never a child).
@@ -91,6 +110,9 @@ private:
     std::vector<ref_ptr<VoxelObject>> lastObjects_;
     glm::dmat4 lastModel_{1.0};
     std::string directory_; ///< of the scene file: a relative voxelFile resolves against it
+    Quality quality_;
+    std::unique_ptr<SlabErrorModel> errorModel_;
+    std::uint64_t errorModelKey_ = 0;
     ref_ptr<VolumeObject> wholeVolume_; ///< wholeVolumeObject()
 };
 

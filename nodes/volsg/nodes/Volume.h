@@ -18,10 +18,18 @@ public:
     static const EnumValues renderModeNames, interpolationNames;
 
     SFEnum renderMode{this, "renderMode", renderModeNames, DVR};
-    SFInt32 numPlanes{this, "numPlanes", 0};                 ///< 0: >= 2 per voxel along the view
-    SFInt32 interactivePlanes{this, "interactivePlanes", 0}; ///< 0: numPlanes / 4
+    /// RMSE per channel, in 1/255, that a still frame may have against the rendering model:
+    /// the fields below that are not set (numPlanes 0, samplesPerPlane, preIntegrated,
+    /// mipPeaks never written) are chosen per frame as the cheapest whose predicted error
+    /// meets it (lib/volsg/slicing/SlicingQuality.h). <= 0 or NaN: no target (2 samples per
+    /// voxel, one per plane, as before).
+    SFFloat errorTarget{this, "errorTarget", 0.5f};
+    /// The same for interactive frames (interactivePlanes 0).
+    SFFloat interactiveErrorTarget{this, "interactiveErrorTarget", 2.0f};
+    SFInt32 numPlanes{this, "numPlanes", 0};                 ///< 0: from errorTarget
+    SFInt32 interactivePlanes{this, "interactivePlanes", 0}; ///< 0: from interactiveErrorTarget
     /// DVR, MIP, MINIP: samples per plane, taken along each pixel's ray inside the plane's slab
-    /// (fewer planes for the same sampling; 0 numPlanes keeps 2 samples per voxel).
+    /// (fewer planes for the same sampling). Not set: from errorTarget.
     SFInt32 samplesPerPlane{this, "samplesPerPlane", 1};
     /// MIP, MINIP: also sample where each ray crosses a voxel-centre plane, so thin peaks are
     /// found at any plane count. FALSE: only samplesPerPlane evenly spaced samples per plane

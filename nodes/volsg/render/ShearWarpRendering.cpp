@@ -1,5 +1,8 @@
 // ShearWarpVolume gathers its objects, renders them with its CPU engine and composites the
 // frame into the Volume pass (lib/volsg/render/ImageCompositor).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <volsg/nodes/ShearWarpVolume.h>
@@ -9,11 +12,62 @@
 #include <volsg/render/ImageCompositor.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/shearwarp/SimdLevel.h>
+#include <volsg/slicing/SlicingQuality.h>
 #include <volsg/volumescene/ShearWarpObjects.h>
+#include <volsg/volumescene/VolumeInScope.h>
 
 namespace volsg {
 
 namespace {
+
+/// The error model's prediction for this frame, and the interactive slice step chosen from the
+/// interactive target when interactiveSliceStep is not set. Predicted only where the model
+/// describes shear-warp: every object a transfer-function DVR object, DVR between them, the
+/// data in scope (not a voxel file).
+ShearWarpVolume::Quality predictQuality(ShearWarpVolume& node, const State& state,
+                                        const std::vector<ShearWarpObject>& objects,
+                                        const ShearWarpView& view, const FrameContext& frame) {
+    ShearWarpVolume::Quality q;
+    q.sliceStep = node.sliceStepFor(frame.interactive, frame.interactivePlaneScale);
+    const float targetField =
+        frame.interactive ? node.interactiveErrorTarget() : node.errorTarget();
+    if (!(targetField > 0.0f) || !node.voxelFile().empty() ||
+        node.interObjectCompositing() != ShearWarpVolume::DVR)
+        return q;
+    for (const ShearWarpObject& o : objects)
+        if (o.compositing != ObjectCompositing::DVR || o.unclipped.mode != VoxelRenderMode::TF)
+            return q;
+    std::optional<VolumeInScope> scope = gatherVolumeInScope(state);
+    if (!scope || !scope->data) return q;
+    RayCastVolume volume;
+    static_cast<VolumeInScope&>(volume) = std::move(*scope);
+    volume.tags = nullptr;
+    volume.transferFunctions = {{-1, objects.front().transferFunction}};
+    volume.mode = VolumeRenderMode::DVR;
+    const std::uint64_t key = std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())) ^
+                              (objects.front().tableKey * 0x9E3779B97F4A7C15ull);
+    SlabErrorModel& model = node.errorModel(volume, key);
+    const QualityView qv =
+        qualityViewOf(view.modelView, view.projection, volume.halfExtent(), model.L0());
+    const int dir = SlabErrorModel::nearestDirection(qv.localDirection);
+    const double scale = std::sqrt(std::clamp(qv.coverage, 0.0, 1.0));
+    const auto predicted = [&](int step) { return scale * model.preClassifiedRmse(dir, step); };
+    q.predicted = true;
+    q.target = double(targetField) / 255.0;
+    q.floorRmse = predicted(1);
+    if (frame.interactive && node.interactiveSliceStep.isDefault()) {
+        int step = 1;
+        for (const int s : {2, 3, 4, 6, 8, 12, 16}) {
+            if (predicted(s) > q.target) break;
+            step = s;
+        }
+        const double viewer =
+            frame.interactivePlaneScale > 0.0 ? std::min(frame.interactivePlaneScale, 1.0) : 1.0;
+        q.sliceStep = int(std::clamp(std::lround(step / viewer), 1L, 16L));
+    }
+    q.predictedRmse = predicted(q.sliceStep);
+    return q;
+}
 
 void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
     action.needFloatTarget();
@@ -36,7 +90,8 @@ void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
                            : InterObjectCompositing::DVR;
     view.threads = node.threads();
     view.valueSortedMip = node.valueSortedMip();
-    view.sliceStep = node.sliceStepFor(frame.interactive, frame.interactivePlaneScale);
+    const ShearWarpVolume::Quality quality = predictQuality(node, state, objects, view, frame);
+    view.sliceStep = quality.sliceStep;
     view.simd = frame.debug.vectorKernels ? bestSimdLevel() : SimdLevel::Scalar;
     std::vector<SceneLight> lights;
     action.lightsInScope(lights);
@@ -50,6 +105,7 @@ void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
 
     const ShearWarpFrame& f =
         node.renderFrame(objects, view, std::move(sources), state.modelMatrix());
+    node.setLastQuality(quality);
     if (const VolumeData* data = state.nearestNode<VolumeData>();
         data && data->isA<VolumeSeries>()) // prefetched steps get this view's RenderList
         static_cast<const VolumeSeries*>(data)->setViewAxis(f.stats.principalAxis);

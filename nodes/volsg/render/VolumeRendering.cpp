@@ -29,6 +29,13 @@ SlicingSettings slicingSettings(const Volume& volume, const State& state,
     settings.preIntegrated = volume.preIntegrated();
     settings.lighting = volume.lighting();
     settings.textureBudget = volume.textureBudget();
+    // Targets in 1/255; NaN and <= 0 mean none (the fixed rules), +infinity the cheapest.
+    auto target = [](float t) { return t > 0.0f ? double(t) / 255.0 : 0.0; };
+    settings.errorTarget = target(volume.errorTarget());
+    settings.interactiveErrorTarget = target(volume.interactiveErrorTarget());
+    settings.fixedSamplesPerPlane = !volume.samplesPerPlane.isDefault();
+    settings.fixedPreIntegrated = !volume.preIntegrated.isDefault();
+    settings.fixedMipPeaks = !volume.mipPeaks.isDefault();
     if (const Material* m = state.nearestNode<Material>()) {
         if (!m->specularColor.empty()) settings.specular = m->specularColor[0];
         if (!m->shininess.empty()) settings.shininess = m->shininess[0];

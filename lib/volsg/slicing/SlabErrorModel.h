@@ -1,0 +1,102 @@
+#pragma once
+// The error model of the Volume slicer: how far its image is from the rendering model's
+// (docs/SCENE-FORMAT.md section 4) for a given slab quadrature (plane spacing, samples per
+// plane, pre-integration, peak sampling), and what the volume's transfer functions and data ask
+// of the sampling. lib/volsg/slicing/README.md ("Error targets") has its validation.
+//
+// How it predicts: the error of slab sampling is that of a quadrature of the classified signal
+// tau(v(s)), C(v(s)) along each ray, which depends on the transfer function's slopes and
+// features composed with the data's variation along the view, on the slab length, opacity
+// correction and the tables' quantisation. Rather than bounding that analytically (bounds on
+// spikes and steps are loose by orders of magnitude), the model evaluates it on a sample of
+// the volume's own rays: rays through the box around one of 96 directions, each
+// integrated twice on the CPU, once finely (linear v segments, exact tau and colour integrals:
+// the model) and once with the slicer's arithmetic (its planes, slabs, parts, opacity
+// correction, its 4096-entry transfer table and 256 x 256 pre-integration table, tag cells,
+// MIP's voxel-centre crossings and peak refinement). The per-ray RMSE scales to an image by
+// the share of pixels the box covers.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <volsg/slicing/PreIntegrationTable.h>
+#include <volsg/slicing/TransferTable.h>
+#include <volsg/volume/VolumeModel.h>
+
+namespace volsg {
+
+/// A slab quadrature as the slicer draws it, with lengths in the volume's L0.
+struct SlabQuadrature {
+    double planeSpacingL0 = 0.5; ///< distance between planes along the view, in L0
+    int samplesPerPlane = 1;
+    bool preIntegrated = false; ///< DVR
+    bool peaks = true;          ///< MIP, MINIP: the voxel-centre crossings (mipPeaks)
+    bool refinePeaks = true;    ///< MIP, MINIP without peaks (refinePeaks)
+    double samplesPerL0() const { return double(samplesPerPlane) / planeSpacingL0; }
+    bool operator<(const SlabQuadrature& o) const;
+};
+
+/// What the transfer functions and the data ask of the sampling (reported, and where the
+/// search for settings starts).
+struct SignalNeeds {
+    double narrowestFeature = 1.0; ///< in v: the narrowest linear piece of an opacity feature
+    double steepestSlope = 0.0;    ///< of tau L0 over v
+    double gradientPerL0 = 0.0;    ///< |grad v| L0 at the 90th percentile of visible voxels
+    double visibleFraction = 0.0;  ///< of the sampled voxels that a table gives opacity
+    /// Samples per L0 at which the narrowest feature, crossed at the 90th-percentile rate,
+    /// gets two samples: 2 gradientPerL0 / narrowestFeature.
+    double samplesPerL0 = 0.0;
+};
+
+class SlabErrorModel {
+public:
+    static constexpr int kDirections = 96;
+
+    /// Takes what the model needs of a volume: its data, tags, transfer functions and mode.
+    /// Cheap (tables and a sample of voxels); rays are cast per direction when first asked.
+    explicit SlabErrorModel(const RayCastVolume& volume);
+    ~SlabErrorModel();
+
+    const SignalNeeds& needs() const { return needs_; }
+    VolumeRenderMode mode() const { return mode_; }
+    double L0() const { return L0_; }
+    /// Whether tagged transfer functions apply (the slicer's general, tag-cell path).
+    bool tagged() const { return tagged_; }
+
+    /// The direction (of kDirections over the half sphere, about 15 degrees apart) nearest to
+    /// a local view direction, either way along it; `wide`: its ray set spread as a
+    /// perspective view's rays (index + kDirections).
+    static int nearestDirection(const glm::dvec3& localDirection, bool wide = false);
+    /// The RMSE per channel (0..1 units) over the rays through the box along direction `dir`
+    /// (nearestDirection) drawn with quadrature `q`, against the model. Cached.
+    double rayRmse(int dir, const SlabQuadrature& q);
+    /// The same for shear-warp (ShearWarpVolume, DVR of transfer-function objects): the
+    /// volume classified per voxel, resampled bilinearly in the voxel slices perpendicular to
+    /// the principal axis, one sample per slice, every `sliceStep`-th slice with opacity
+    /// corrected for the step. Its floor is sliceStep 1.
+    double preClassifiedRmse(int dir, int sliceStep);
+    /// Whether direction `dir`'s rays are cast already (rayRmse for it is then cheap).
+    bool hasDirection(int dir) const;
+    /// The box's depth along direction `dir`, in L0.
+    double depthL0(int dir) const;
+    /// Rays cast and quadratures evaluated so far (a cost figure for tests and reports).
+    int evaluations() const { return evaluations_; }
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> impl_;
+    SignalNeeds needs_;
+    VolumeRenderMode mode_ = VolumeRenderMode::DVR;
+    double L0_ = 1.0;
+    bool tagged_ = false;
+    std::map<std::pair<int, SlabQuadrature>, double> cache_;
+    std::map<std::pair<int, int>, double> preClassifiedCache_;
+    int evaluations_ = 0;
+};
+
+} // namespace volsg

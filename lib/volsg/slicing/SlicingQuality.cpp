@@ -1,0 +1,219 @@
+// The slicer's settings from an error target (see SlicingQuality.h).
+#include <volsg/slicing/SlicingQuality.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace volsg {
+
+namespace {
+
+/// The model's prediction is taken against this share of the target: over the validation
+/// cases it came out between about half and 1.4 times the measured error (README, "Error
+/// targets").
+constexpr double kTargetMargin = 0.7;
+/// Samples per plane tried for automatic settings (powers of two), and the fewest planes an
+/// automatic layout has across the view's depth (one: a single slab of many samples, which
+/// the model predicts like any other).
+constexpr int kMaxAutoSamples = 64;
+constexpr double kMinAutoPlanes = 1.0;
+/// Samples per L0 searched: 2^(j/2) for j in [kLowestStep, kHighestStep].
+constexpr int kLowestStep = -16; // 1/256
+constexpr int kHighestStep = 8;  // 16
+
+/// Spacing rounded to 3 significant digits, so views that differ a little share a cache key.
+double roundedSpacing(double s) {
+    if (!(s > 0.0)) return s;
+    const double e = std::pow(10.0, std::floor(std::log10(s)) - 2.0);
+    return std::round(s / e) * e;
+}
+
+/// The quadrature of `samplesPerL0` with `samples` per plane for one kind (pre-integrated, or
+/// peaks), or with the request's fixed plane count.
+SlabQuadrature quadratureFor(double samplesPerL0, int samples, bool preIntegrated, bool peaks,
+                             const QualityRequest& r, const QualityView& view) {
+    SlabQuadrature q;
+    q.preIntegrated = preIntegrated;
+    q.peaks = peaks;
+    q.refinePeaks = r.refinePeaks;
+    if (r.numPlanes) {
+        q.planeSpacingL0 = roundedSpacing(view.depthL0 / std::max(*r.numPlanes, 1));
+        q.samplesPerPlane =
+            r.samplesPerPlane
+                ? *r.samplesPerPlane
+                : std::clamp(int(std::ceil(samplesPerL0 * q.planeSpacingL0 - 1e-9)), samples, 256);
+        return q;
+    }
+    q.samplesPerPlane = samples;
+    q.planeSpacingL0 = double(samples) / samplesPerL0;
+    return q;
+}
+
+} // namespace
+
+QualityView qualityViewOf(const glm::dmat4& modelView, const glm::dmat4& projection,
+                          const glm::dvec3& halfExtent, double L0) {
+    QualityView q;
+    const glm::dmat4 eyeToLocal = glm::inverse(modelView);
+    const glm::dmat3 eyeToLocal3(eyeToLocal);
+    const glm::dvec3 axis = eyeToLocal3 * glm::dvec3(0.0, 0.0, -1.0);
+    q.localDirection = glm::normalize(axis);
+    // The box's extent along the view axis: its corners' eye depths, in local units.
+    double lo = 1e300, hi = -1e300;
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 p((c & 1) ? halfExtent.x : -halfExtent.x,
+                           (c & 2) ? halfExtent.y : -halfExtent.y,
+                           (c & 4) ? halfExtent.z : -halfExtent.z);
+        const double depth = -(modelView * glm::dvec4(p, 1.0)).z;
+        lo = std::min(lo, depth);
+        hi = std::max(hi, depth);
+    }
+    q.depthL0 = (hi - lo) * glm::length(axis) / L0;
+    const glm::dmat4 unproject = glm::inverse(projection);
+    constexpr int n = 24;
+    int hits = 0;
+    double stretch = 0.0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const double x = -1.0 + (i + 0.5) * 2.0 / n, y = -1.0 + (j + 0.5) * 2.0 / n;
+            const glm::dvec4 nearPoint = unproject * glm::dvec4(x, y, -1.0, 1.0);
+            const glm::dvec4 farPoint = unproject * glm::dvec4(x, y, 1.0, 1.0);
+            const glm::dvec3 a = glm::dvec3(nearPoint) / nearPoint.w;
+            const glm::dvec3 eyeDir = glm::normalize(glm::dvec3(farPoint) / farPoint.w - a);
+            const glm::dvec3 o = glm::dvec3(eyeToLocal * glm::dvec4(a, 1.0));
+            const glm::dvec3 d = eyeToLocal3 * eyeDir;
+            double t0 = 0.0, t1 = 1e300;
+            for (int k = 0; k < 3; ++k) {
+                if (std::abs(d[k]) < 1e-300) {
+                    if (std::abs(o[k]) > halfExtent[k]) t1 = -1.0;
+                    continue;
+                }
+                double ta = (-halfExtent[k] - o[k]) / d[k];
+                double tb = (halfExtent[k] - o[k]) / d[k];
+                if (ta > tb) std::swap(ta, tb);
+                t0 = std::max(t0, ta);
+                t1 = std::min(t1, tb);
+            }
+            if (!(t1 > t0)) continue;
+            ++hits;
+            const double c = std::max(-eyeDir.z, 0.05);
+            stretch += 1.0 / c;
+            q.coneTangent = std::max(q.coneTangent, std::sqrt(std::max(0.0, 1.0 - c * c)) / c);
+        }
+    q.coverage = double(hits) / (n * n);
+    q.slabStretch = hits > 0 ? stretch / hits : 1.0;
+    return q;
+}
+
+double quadratureCost(const SlabQuadrature& q, double depthL0, VolumeRenderMode mode, bool tagged) {
+    // Fitted to llvmpipe's times (ML 64^3, 128 x 128, 54 fixed settings, README "Error
+    // targets"): a plane's fragments cost about 8.7 lean samples (rasterisation, slab set-up,
+    // the float blend); a pre-integrated sample 3.2 (two data fetches and a 2D table, the
+    // general loop); a general-loop sample 1.5, a tag-cell split 3 times that.
+    const double planes = std::max(1.0, std::ceil(depthL0 / q.planeSpacingL0 - 1e-9));
+    const int k = std::max(q.samplesPerPlane, 1);
+    constexpr double fragment = 8.7;
+    double perSample = 1.0;
+    double samples = k;
+    if (mode == VolumeRenderMode::DVR) {
+        const bool lean = k > 1 && !tagged && !q.preIntegrated;
+        perSample = q.preIntegrated ? 3.2 : lean ? 1.0 : 1.5;
+        if (tagged) perSample *= 3.0;
+    } else {
+        const bool lean = k > 1 && !tagged && !q.peaks;
+        perSample = lean ? 1.0 : 1.5;
+        if (q.peaks) samples += k == 1 ? 3.0 : 1.7 * q.planeSpacingL0; // voxel-centre crossings
+    }
+    return planes * (fragment + samples * perSample);
+}
+
+double predictImageRmse(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q) {
+    // A perspective view's rays spread: the model's wide ray sets spread alike (their slabs
+    // stretch as the view's do); a narrow view stretches its slabs by the mean.
+    const bool wide = view.coneTangent > 0.2;
+    SlabQuadrature stretched = q;
+    if (!wide) stretched.planeSpacingL0 = roundedSpacing(q.planeSpacingL0 * view.slabStretch);
+    // Denser than the search's top rate (numPlanes 100000, samplesPerPlane 256): predicted at
+    // that rate, an upper bound, so the model's work stays bounded.
+    const double topRate = std::pow(2.0, 0.5 * kHighestStep);
+    if (stretched.samplesPerL0() > topRate)
+        stretched.planeSpacingL0 = roundedSpacing(stretched.samplesPerPlane / topRate);
+    const int dir = SlabErrorModel::nearestDirection(view.localDirection, wide);
+    return std::sqrt(std::clamp(view.coverage, 0.0, 1.0)) * model.rayRmse(dir, stretched);
+}
+
+QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
+                            const QualityRequest& request) {
+    const VolumeRenderMode mode = model.mode();
+    const bool extreme = mode == VolumeRenderMode::MIP || mode == VolumeRenderMode::MINIP;
+    // The kinds to try: DVR post-classified or pre-integrated; MIP/MINIP with or without the
+    // voxel-centre crossings (unless the request fixes it).
+    std::vector<bool> kinds;
+    const std::optional<bool>& fixedKind = extreme ? request.peaks : request.preIntegrated;
+    if (fixedKind)
+        kinds.push_back(*fixedKind);
+    else
+        kinds = {false, true};
+    // Samples per plane to try: the request's, or (planes automatic) powers of two; with a
+    // fixed plane count the samples follow the rate.
+    std::vector<int> sampleCounts;
+    if (request.samplesPerPlane)
+        sampleCounts.push_back(*request.samplesPerPlane);
+    else if (request.numPlanes)
+        sampleCounts.push_back(1);
+    else
+        for (int k = 1; k <= kMaxAutoSamples; k *= 2)
+            sampleCounts.push_back(k);
+
+    QualityChoice best;
+    double bestCost = std::numeric_limits<double>::infinity();
+    QualityChoice leastError;
+    leastError.predictedRmse = std::numeric_limits<double>::infinity();
+    const double wanted = request.errorTarget * kTargetMargin;
+    const bool single = request.numPlanes && request.samplesPerPlane;
+    // The walk starts at the lowest rate: the signal's needs (SignalNeeds) would skip cheap
+    // rates, but a step in the transfer function has a narrowest feature of one table entry
+    // and still meets loose targets at low rates (pre-integrated).
+    const int lowest = kLowestStep;
+    for (const bool kind : kinds) {
+        const bool pre = !extreme && kind, peaks = extreme && kind;
+        int start = lowest; // the rate that met the target with the previous sample count
+        for (const int samples : sampleCounts) {
+            // Refinement takes the neighbours of a slab's top: it needs two samples a plane.
+            if (extreme && !peaks && request.refinePeaks && samples < 2 && !request.samplesPerPlane)
+                continue;
+            for (int j = start; j <= kHighestStep; ++j) {
+                const SlabQuadrature q =
+                    quadratureFor(std::pow(2.0, 0.5 * j), samples, pre, peaks, request, view);
+                if (!request.numPlanes && view.depthL0 / q.planeSpacingL0 < kMinAutoPlanes &&
+                    j < kHighestStep)
+                    continue; // too few planes: a higher rate gives more
+                const double cost = quadratureCost(q, view.depthL0, mode, model.tagged());
+                if (cost >= bestCost) break; // dearer than a choice that meets the target
+                const double error = predictImageRmse(model, view, q);
+                if (error < leastError.predictedRmse) {
+                    leastError.quadrature = q;
+                    leastError.predictedRmse = error;
+                }
+                if (error <= wanted) {
+                    best.quadrature = q;
+                    best.predictedRmse = error;
+                    bestCost = cost;
+                    start = std::max(lowest, j - 2);
+                    break;
+                }
+                if (single) break;
+            }
+        }
+    }
+    if (!std::isfinite(bestCost)) {
+        best = leastError;
+        best.meetsTarget = false;
+    }
+    best.direction = SlabErrorModel::nearestDirection(view.localDirection, view.coneTangent > 0.2);
+    return best;
+}
+
+} // namespace volsg

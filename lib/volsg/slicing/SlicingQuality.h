@@ -1,0 +1,59 @@
+#pragma once
+// From an error target to the slicer's settings: the cheapest slab quadrature whose predicted
+// error (SlabErrorModel) meets the target in this view, the explicit settings kept as given.
+
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include <volsg/slicing/SlabErrorModel.h>
+
+namespace volsg {
+
+/// What a frame asks: the target and which settings are fixed (unset = automatic).
+struct QualityRequest {
+    double errorTarget = 0.5 / 255.0; ///< RMSE per channel of the image, 0..1 units
+    std::optional<int> numPlanes;     ///< a plane count over the view's depth
+    std::optional<int> samplesPerPlane;
+    std::optional<bool> preIntegrated;
+    std::optional<bool> peaks; ///< MIP, MINIP: mipPeaks
+    bool refinePeaks = true;
+};
+
+/// The view as the error depends on it.
+struct QualityView {
+    glm::dvec3 localDirection{0.0, 0.0, -1.0}; ///< the view axis in the volume's local frame
+    double depthL0 = 1.0;     ///< the box's extent along the view axis, in L0 (local units)
+    double coverage = 1.0;    ///< share of the image's pixels whose rays cross the box
+    double slabStretch = 1.0; ///< mean ray length per unit of view depth (perspective: > 1)
+    double coneTangent = 0.0; ///< tangent of the widest angle of a ray on the box to the axis
+};
+
+/// The view of a volume box [-halfExtent, halfExtent] under `modelView` (local to eye) and
+/// `projection`: its axis, its depth in L0, and over a 24 x 24 grid of pixel rays the share
+/// that crosses the box and their mean length per unit of view depth.
+QualityView qualityViewOf(const glm::dmat4& modelView, const glm::dmat4& projection,
+                          const glm::dvec3& halfExtent, double L0);
+
+struct QualityChoice {
+    SlabQuadrature quadrature;  ///< plane spacing (L0, along the view), samples, methods
+    double predictedRmse = 0.0; ///< of the image, 0..1 units
+    bool meetsTarget = true;
+    int direction = 0; ///< SlabErrorModel's direction used
+};
+
+/// The image RMSE the model predicts for quadrature q in this view: sqrt(coverage) times the
+/// RMSE of the rays through the box, with slabs stretched as perspective rays stretch them.
+double predictImageRmse(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q);
+
+/// The cheapest quadrature (by the cost model in SlicingQuality.cpp) whose predicted image RMSE
+/// is at most the target, among those the request leaves free; the one with the least error
+/// when none is (meetsTarget false).
+QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
+                            const QualityRequest& request);
+
+/// The relative cost of drawing quadrature q over a view depth of `depthL0` (fragments times
+/// their samples; the weights are llvmpipe's, lib/volsg/slicing/README.md).
+double quadratureCost(const SlabQuadrature& q, double depthL0, VolumeRenderMode mode, bool tagged);
+
+} // namespace volsg

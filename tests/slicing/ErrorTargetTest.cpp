@@ -1,0 +1,265 @@
+// Error targets: the slicer's error model predicts the measured error, the Volume node chooses
+// settings that meet its target, explicit fields override the choice, and pre-integration
+// works for tagged volumes (lib/volsg/slicing/README.md, "Error targets").
+#include "SlicingTestSupport.h"
+
+#include <volsg/io/SceneReader.h>
+#include <volsg/nodes/ShearWarpVolume.h>
+#include <volsg/nodes/Volume.h>
+#include <volsg/slicing/SlabErrorModel.h>
+#include <volsg/slicing/SlicingQuality.h>
+
+using namespace volsg;
+using namespace volsg::test;
+
+namespace {
+
+/// The model's prediction is checked against the measurement within this factor either way.
+constexpr double kPredictionFactor = 3.0;
+
+/// All of the quality fixed (so the node draws exactly this) with a target, so that the error
+/// of exactly this setting is predicted.
+SlicingSettings fixed(int planes, int samples, bool preIntegrated) {
+    SlicingSettings s;
+    s.numPlanes = planes;
+    s.samplesPerPlane = samples;
+    s.preIntegrated = preIntegrated;
+    s.fixedSamplesPerPlane = s.fixedPreIntegrated = s.fixedMipPeaks = true;
+    s.errorTarget = s.interactiveErrorTarget = 0.5 * k8Bit;
+    return s;
+}
+
+SlicingSettings automatic(double targetIn255) {
+    SlicingSettings s;
+    s.errorTarget = targetIn255 * k8Bit;
+    s.interactiveErrorTarget = 4.0 * targetIn255 * k8Bit;
+    return s;
+}
+
+/// The issue's volume: 37 x 23 x 19 USHORT, spacing 1 x 1.5 x 2.5, a smooth blob, under one
+/// narrow spike of opacity (0 -> 0.9 -> 0 over 10% of the range).
+RayCastVolume anisotropicSpike() {
+    auto grid = makeGrid({37, 23, 19}, VoxelType::UShort, {1.0, 1.5, 2.5},
+                         [](const glm::dvec3& p) { return std::exp(-glm::dot(p, p) / 0.25); });
+    return volumeOf(grid, transferFunction(spike(0.45, 0.5, 0.55, 0.9), {{0, 1}, {1, 1}},
+                                           {{0, 0.7}, {1, 0.7}}, {{0, 0.3}, {1, 0.3}}));
+}
+
+void checkPrediction(const Comparison& c, const std::string& what) {
+    const double predicted = c.stats.predictedRmse;
+    const double measured = c.difference.rmse;
+    MESSAGE(what << ": predicted " << predicted / k8Bit << "/255, measured " << measured / k8Bit
+                 << "/255");
+    REQUIRE(predicted >= 0.0);
+    // Errors below 0.02/255 are at the level of float arithmetic and table steps, which the
+    // model does not try to predict: only an upper bound is checked there.
+    if (measured < 0.02 * k8Bit) {
+        CHECK(predicted < 0.1 * k8Bit);
+        return;
+    }
+    CHECK(predicted < kPredictionFactor * measured);
+    CHECK(predicted > measured / kPredictionFactor);
+}
+
+} // namespace
+
+TEST_CASE_FIXTURE(GlFixture, "the error model predicts the measured error of fixed settings") {
+    const RayCastVolume ml = marschnerLobbVolume();
+    auto camera = framing(*ml.data, {0.3f, 0.5f, 1.0f});
+    checkPrediction(compareGrid(renderer, ml, fixed(12, 1, false), *camera, 48), "ML 12 x 1");
+    checkPrediction(compareGrid(renderer, ml, fixed(6, 4, false), *camera, 48), "ML 6 x 4");
+    checkPrediction(compareGrid(renderer, ml, fixed(12, 1, true), *camera, 48), "ML 12 x 1 pre");
+    const RayCastVolume sp = anisotropicSpike();
+    auto spikeCamera = framing(*sp.data, {0.6f, 0.4f, 1.0f});
+    checkPrediction(compareGrid(renderer, sp, fixed(40, 1, false), *spikeCamera, 48),
+                    "spike 40 x 1");
+    checkPrediction(compareGrid(renderer, sp, fixed(10, 8, false), *spikeCamera, 48),
+                    "spike 10 x 8");
+    checkPrediction(compareGrid(renderer, sp, fixed(20, 1, true), *spikeCamera, 48),
+                    "spike 20 x 1 pre");
+}
+
+TEST_CASE_FIXTURE(GlFixture, "the default meets its target on the anisotropic 16-bit spike") {
+    // The issue's default (2 samples per voxel, one per plane) gave 12.6/255 on its volume; on
+    // this blob it misses the default target too.
+    const RayCastVolume sp = anisotropicSpike();
+    auto camera = framing(*sp.data, {0.6f, 0.4f, 1.0f});
+    for (const double target : {0.5, 2.0}) {
+        const Comparison c = compareGrid(renderer, sp, automatic(target), *camera, 64);
+        MESSAGE("target " << target << "/255: " << c.stats.planes << " planes x "
+                          << c.stats.samplesPerPlane
+                          << std::string(c.stats.preIntegrated ? " pre-int" : "") << ", predicted "
+                          << c.stats.predictedRmse / k8Bit << "/255, measured "
+                          << c.difference.rmse / k8Bit << "/255");
+        CHECK(c.stats.meetsTarget);
+        CHECK(c.difference.rmse <= target * k8Bit);
+    }
+    // Without a target: the old fixed rule, far off on this transfer function.
+    const Comparison old = compareGrid(renderer, sp, SlicingSettings{}, *camera, 64);
+    MESSAGE("no target: " << old.stats.planes << " planes, " << old.difference.rmse / k8Bit
+                          << "/255");
+    CHECK(old.stats.predictedRmse < 0.0);
+    CHECK(old.difference.rmse > 0.5 * k8Bit);
+}
+
+TEST_CASE_FIXTURE(GlFixture, "a looser target draws fewer samples") {
+    const RayCastVolume ml = marschnerLobbVolume();
+    auto camera = framing(*ml.data, {0.3f, 0.5f, 1.0f});
+    const Comparison tight = compareGrid(renderer, ml, automatic(0.1), *camera, 48);
+    const Comparison loose = compareGrid(renderer, ml, automatic(2.0), *camera, 48);
+    const auto samples = [](const SlicingStats& s) { return s.samplesPerPlane / s.planeSpacingL0; };
+    MESSAGE("0.1/255: " << samples(tight.stats) << " samples per L0, measured "
+                        << tight.difference.rmse / k8Bit << "; 2/255: " << samples(loose.stats)
+                        << ", measured " << loose.difference.rmse / k8Bit);
+    CHECK(samples(loose.stats) < samples(tight.stats));
+    CHECK(tight.difference.rmse <= 0.1 * k8Bit);
+    CHECK(loose.difference.rmse <= 2.0 * k8Bit);
+    // Interactive frames take their own target (4x here).
+    const Comparison interactive =
+        compareGrid(renderer, ml, automatic(0.1), *camera, 48, glm::vec3(0.0f), true);
+    CHECK(samples(interactive.stats) < samples(tight.stats));
+    CHECK(interactive.stats.errorTarget == doctest::Approx(0.4 * k8Bit));
+}
+
+TEST_CASE_FIXTURE(GlFixture, "the node's explicit fields override the choice") {
+    const std::string head =
+        "#Inventor V2.1 ascii\nSeparator {\n"
+        "  PerspectiveCamera { position 0 0 3 heightAngle 0.9 }\n"
+        "  VolumeData { generator MARSCHNER_LOBB dimensions 24 24 24 }\n"
+        "  TransferFunction { alpha [ 0 0, 0.475 0, 0.5 0.6, 0.525 0, 1 0 ] }\n";
+    auto render = [&](const std::string& fields) {
+        ref_ptr<Node> root =
+            readSceneFromString(head + "  DEF V Volume { " + fields + " }\n}\n", "override.iv");
+        RenderOptions options;
+        options.width = options.height = 32;
+        renderer.render(*root, options);
+        Volume* v = nullptr;
+        for (const auto& child : *root->children())
+            if (child->isA<Volume>()) v = static_cast<Volume*>(child.get());
+        REQUIRE(v);
+        return v->slicingStats();
+    };
+    const SlicingStats chosen = render("");
+    MESSAGE("automatic: " << chosen.planes << " x " << chosen.samplesPerPlane
+                          << std::string(chosen.preIntegrated ? " pre-int" : ""));
+    CHECK(chosen.predictedRmse >= 0.0);
+    const SlicingStats all = render("numPlanes 40 samplesPerPlane 3 preIntegrated TRUE");
+    CHECK(all.planes == 40);
+    CHECK(all.samplesPerPlane == 3);
+    CHECK(all.preIntegrated);
+    CHECK(all.predictedRmse >= 0.0); // still predicted and reported
+    // Written at their default values they are still explicit.
+    const SlicingStats defaults = render("samplesPerPlane 1 preIntegrated FALSE");
+    CHECK(defaults.samplesPerPlane == 1);
+    CHECK_FALSE(defaults.preIntegrated);
+    // No target: the fixed rules (2 samples per voxel along the view, no prediction).
+    const SlicingStats none = render("errorTarget 0");
+    CHECK(none.predictedRmse < 0.0);
+    CHECK(none.samplesPerPlane == 1);
+    CHECK(none.planeSpacingL0 == doctest::Approx(0.5).epsilon(0.05));
+    CHECK(render("errorTarget -1").predictedRmse < 0.0);
+}
+
+TEST_CASE_FIXTURE(GlFixture, "pre-integration works for tagged volumes") {
+    const RayCastVolume v =
+        labelledVolume(20, {{-1, transferFunction(spike(0.3, 0.35, 0.4, 0.5))},
+                            {1, transferFunction(spike(0.6, 0.65, 0.7, 0.9), {{0, 1}, {1, 1}},
+                                                 {{0, 0.2}, {1, 0.2}}, {{0, 0}, {1, 0}})},
+                            {2, transferFunction(spike(0.2, 0.3, 0.4, 0.7), {{0, 0}, {1, 0}},
+                                                 {{0, 1}, {1, 1}}, {{0, 0.3}, {1, 0.3}})}});
+    auto camera = framing(*v.data, {0.4f, 0.6f, 1.0f});
+    SlicingSettings post;
+    post.numPlanes = 16;
+    const auto [plain, pre] = compareSettings(renderer, v, post, preIntegrated(post), *camera, 48);
+    keepImages(pre, "tagged-pre-integrated");
+    MESSAGE("16 planes, tagged: post-classified " << plain.difference.rmse / k8Bit
+                                                  << "/255, pre-integrated "
+                                                  << pre.difference.rmse / k8Bit << "/255");
+    CHECK(pre.stats.preIntegrated);
+    CHECK(pre.difference.rmse < 0.5 * plain.difference.rmse);
+    checkDifference(pre.difference, 1.5, 30.0, "tagged pre-integrated, 16 planes: ");
+    // Many planes: both converge to the reference.
+    SlicingSettings many;
+    many.numPlanes = 160;
+    const Comparison fine = compareGrid(renderer, v, preIntegrated(many), *camera, 48);
+    checkDifference(fine.difference, 0.3, 8.0, "tagged pre-integrated, 160 planes: ");
+}
+
+TEST_CASE("the error model's choice is the cheapest that meets the target") {
+    const RayCastVolume ml = marschnerLobbVolume();
+    SlabErrorModel model(ml);
+    QualityView view;
+    view.localDirection = {0.0, 0.0, -1.0};
+    view.depthL0 = 17.0;
+    view.coverage = 0.5;
+    const QualityRequest request{2e-3, {}, {}, {}, {}, true};
+    const QualityChoice c = chooseQuality(model, view, request);
+    CHECK(c.meetsTarget);
+    CHECK(c.predictedRmse <= request.errorTarget);
+    // No other quadrature of the search grid that the model predicts within the target (with
+    // the chooser's margin, 0.7) is cheaper.
+    const double cost = quadratureCost(c.quadrature, view.depthL0, VolumeRenderMode::DVR, false);
+    for (const bool pre : {false, true})
+        for (int k = 1; k <= 64; k *= 2)
+            for (int j = -16; j <= 8; ++j) {
+                SlabQuadrature q;
+                q.samplesPerPlane = k;
+                q.planeSpacingL0 = k / std::pow(2.0, 0.5 * j);
+                q.preIntegrated = pre;
+                if (view.depthL0 / q.planeSpacingL0 < 1.0) continue; // fewer than one plane
+                if (predictImageRmse(model, view, q) > 0.7 * request.errorTarget) continue;
+                CHECK(quadratureCost(q, view.depthL0, VolumeRenderMode::DVR, false) >=
+                      0.999 * cost);
+            }
+    // The prediction falls with the sampling rate.
+    SlabQuadrature denser = c.quadrature;
+    denser.planeSpacingL0 /= 4.0;
+    CHECK(predictImageRmse(model, view, denser) < c.predictedRmse);
+}
+
+TEST_CASE_FIXTURE(GlFixture, "ShearWarpVolume predicts its error and picks the interactive step") {
+    const std::string scene = R"(#Inventor V2.1 ascii
+Separator {
+  OrthographicCamera { position 0 1.2 4 orientation 1 0 0 -0.2914567944778671 height 3.4843
+                       nearDistance 2 farDistance 6.5 focalDistance 4.18 }
+  VolumeData { generator MARSCHNER_LOBB dimensions 32 32 32 }
+  DEF SW ShearWarpVolume {
+    TransferFunction { red [ 0 0.1, 1 1 ] green [ 0 0.3, 1 0.9 ] blue [ 0 1, 1 0.1 ]
+                       alpha [ 0 0, 1 0.12 ] }
+    VolumeObject { }
+  }
+}
+)";
+    ref_ptr<Node> root = readSceneFromString(scene, "sw.iv");
+    auto* sw = static_cast<ShearWarpVolume*>(root->children()->back().get());
+    REQUIRE(sw->isA<ShearWarpVolume>());
+    RenderOptions options;
+    options.width = options.height = 64;
+    const Image reference = renderReference(*root, options);
+    const Image still = renderer.render(*root, options);
+    const ShearWarpVolume::Quality floor = sw->lastQuality();
+    const double measured = difference(still, reference).rmse;
+    MESSAGE("still: predicted " << floor.predictedRmse / k8Bit << "/255, measured "
+                                << measured / k8Bit << "/255");
+    REQUIRE(floor.predicted);
+    CHECK(floor.sliceStep == 1);
+    CHECK(floor.predictedRmse == doctest::Approx(floor.floorRmse));
+    CHECK(floor.predictedRmse < kPredictionFactor * measured);
+    CHECK(floor.predictedRmse > measured / kPredictionFactor);
+    // Interactive: the largest step predicted within interactiveErrorTarget.
+    for (const float target : {2.0f, 8.0f}) {
+        sw->interactiveErrorTarget = target;
+        options.interactive = true;
+        const Image moving = renderer.render(*root, options);
+        const ShearWarpVolume::Quality q = sw->lastQuality();
+        MESSAGE("interactive target " << target << "/255: step " << q.sliceStep << ", predicted "
+                                      << q.predictedRmse / k8Bit << "/255, measured "
+                                      << difference(moving, reference).rmse / k8Bit << "/255");
+        CHECK(q.predictedRmse <= target * k8Bit + 1e-12);
+        if (target == 8.0f) CHECK(q.sliceStep > 1);
+    }
+    // Set in the scene, the step is kept.
+    sw->interactiveSliceStep = 3;
+    renderer.render(*root, options);
+    CHECK(sw->lastQuality().sliceStep == 3);
+}
