@@ -101,17 +101,18 @@ TEST_CASE("the field panel lists every field with its widget and sets values fro
         return std::size_t(0);
     };
     CHECK(panel.entries()[0].kind == FieldPanelModel::Kind::Enum); // renderMode
-    CHECK(panel.entries()[1].kind == FieldPanelModel::Kind::Int);  // numPlanes
+    const std::size_t numPlanes = entryOf("numPlanes");
+    CHECK(panel.entries()[numPlanes].kind == FieldPanelModel::Kind::Int);
     CHECK(panel.entries()[entryOf("preIntegrated")].kind == FieldPanelModel::Kind::Bool);
     const std::size_t planeOpacity = entryOf("planeOpacity");
     CHECK(panel.entries()[planeOpacity].kind == FieldPanelModel::Kind::Text); // MFVec2f
     std::string error;
     CHECK(panel.setText(planeOpacity, "[ 0 0.5, 1 2 ]", &error));
     CHECK(volume->planeOpacity.getValues() == std::vector<glm::vec2>{{0, 0.5f}, {1, 2}});
-    CHECK_FALSE(panel.setText(1, "many", &error));
+    CHECK_FALSE(panel.setText(numPlanes, "many", &error));
     CHECK(error.find("numPlanes") != std::string::npos);
     CHECK(volume->numPlanes.isDefault());
-    panel.change(1, [&] { volume->numPlanes = 64; });
+    panel.change(numPlanes, [&] { volume->numPlanes = 64; });
     CHECK(volume->numPlanes() == 64);
     CHECK(history.size() == 2);
     history.undo();

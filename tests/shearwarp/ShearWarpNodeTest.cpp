@@ -282,6 +282,8 @@ TEST_CASE("while interacting the node skips slices, lowered further by the viewe
     ShearWarpVolume* volume = findNode<ShearWarpVolume>(*root);
     REQUIRE(volume != nullptr);
     volume->optimize = false;
+    // Set, so the fixed step applies (left unset, interactiveErrorTarget chooses it).
+    volume->interactiveSliceStep = 2;
     RenderOptions options = smallOptions();
     const Image still = renderer.render(*root, options);
     const ShearWarpStats stillStats = volume->lastFrame()->stats;
