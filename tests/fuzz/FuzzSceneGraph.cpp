@@ -182,9 +182,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FuzzedDataProvider in(data + 1, size - 1);
     fuzz::SceneGenerator generator(in, path, w.types);
     const std::string text = generator.generate();
-    if (w.print)
-        std::fprintf(stderr, "---- %s scene, %zu pokes\n%s", fuzz::kRenderPathNames[int(path)],
-                     generator.pokes().size(), text.c_str());
+    if (w.print) {
+        std::fprintf(stderr, "---- %s scene\n%s", fuzz::kRenderPathNames[int(path)], text.c_str());
+        for (const fuzz::Poke& p : generator.pokes())
+            std::fprintf(stderr, "---- poke %s.%s[%zu] = %g\n", p.node.c_str(), p.field.c_str(),
+                         p.component, double(p.value));
+    }
     try {
         const ref_ptr<Node> root = readSceneFromString(text, w.sceneFile);
         applyPokes(*root, generator.pokes());
