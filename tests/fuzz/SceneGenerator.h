@@ -93,7 +93,8 @@ public:
 private:
     static constexpr int kMaxDepth = 5;
     static constexpr int kMaxNodes = 80;
-    static constexpr std::size_t kNumberBudget = 200000; ///< numbers in all MF values
+    static constexpr std::size_t kNumberBudget = 200000;             ///< numbers in all MF values
+    static constexpr std::size_t kTextBudget = std::size_t(4) << 20; ///< bytes of scene text
 
     FuzzedDataProvider& in_;
     RenderPath path_;
@@ -283,6 +284,13 @@ private:
         std::vector<std::string> pattern;
         for (std::size_t i = 0; i < distinct * std::size_t(components); ++i)
             pattern.push_back(scalar(nodeName, fieldName, value, pattern.size(), fileField));
+        // Long strings repeated make long text: the list stays within the scene's text budget.
+        std::size_t patternBytes = 0;
+        for (const std::string& p : pattern)
+            patternBytes += p.size() + 1;
+        const std::size_t elementBytes = patternBytes / std::max<std::size_t>(distinct, 1) + 1;
+        const std::size_t textLeft = kTextBudget - std::min(text_.size(), kTextBudget);
+        count = std::min(count, textLeft / elementBytes);
         text_ += "[";
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t first = (i % std::max<std::size_t>(distinct, 1)) * components;
@@ -351,7 +359,10 @@ private:
         case 0:
             return "";
         case 1:
-            return std::string(in_.PickValueInArray<std::size_t>({1000, 10000, 100000}), 'W');
+            return std::string(text_.size() < kTextBudget / 2
+                                   ? in_.PickValueInArray<std::size_t>({1000, 10000, 100000})
+                                   : 10,
+                               'W');
         case 2:
             return "\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80 \xff\xfe";
         case 3:
