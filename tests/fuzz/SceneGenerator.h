@@ -233,7 +233,7 @@ private:
         } else if (t == "SFImage") {
             text_ += head + image();
         } else if (!engines_.empty() && depth < kMaxDepth &&
-                   in_.ConsumeIntegralInRange(0, 15) == 0) {
+                   in_.ConsumeIntegralInRange(0, 31) == 0) {
             text_ += head + "= ";
             engineSource(depth);
         } else if (t.size() > 2 && (t[0] == 'S' || t[0] == 'M') && t[1] == 'F') {
