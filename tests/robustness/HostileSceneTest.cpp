@@ -276,3 +276,17 @@ TEST_CASE("non-finite BoxClip values set in code are refused by every volume pat
         checkRefusedByBoth(renderBoth(*root), "BoxClip", "not a finite number");
     }
 }
+
+// Found by fuzz-scenegraph: without a camera, a scene whose bounding box is too large for the
+// camera made to view it all was refused as "OrthographicCamera: ..." with no file or node.
+TEST_CASE("a scene too large for the camera made to view it all is refused naming its file") {
+    OSMesaContext context;
+    for (const char* volume : {"Volume { }", "ShearWarpVolume { VolumeObject { } }"}) {
+        CAPTURE(volume);
+        const std::string text = kHeader +
+                                 "Separator {\nCoordinate3 { point [ -3e38 -3e38 0, 3e38 3e38 0 ] "
+                                 "}\nPointSet { }\n" +
+                                 kSphere + volume + "\n}\n";
+        checkRefusedByBoth(renderBoth(text), "Separator", "the scene has no camera");
+    }
+}
