@@ -34,9 +34,10 @@ public:
         write("buffer.bin", ramp.substr(0, 256));
     }
     ~FuzzScratch() {
-        for (const char* name : {"data.raw", "data.raw.gz", "buffer.bin", "input.nrrd",
-                                 "input.nhdr", "input.mha", "input.mhd", "input.raw", "input.gltf",
-                                 "input.glb", "input.nii", "input.hdr", "input.dcm"})
+        for (const char* name :
+             {"data.raw", "data.raw.gz", "buffer.bin", "input.nrrd", "input.nhdr", "input.mha",
+              "input.mhd", "input.raw", "input.gltf", "input.glb", "input.nii", "input.hdr",
+              "input.dcm", "tiny.nrrd", "tiny.gltf", "tiny.png", "tiny.iv", "loop.iv", "scene.iv"})
             ::unlink((folder_ + "/" + name).c_str());
         ::rmdir(folder_.c_str());
     }

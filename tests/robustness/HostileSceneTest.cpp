@@ -4,13 +4,16 @@
 // reference ray caster agree on which.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include <volsg/context/OSMesaContext.h>
 #include <volsg/core/Error.h>
+#include <volsg/fields/Fields.h>
 #include <volsg/image/Image.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/render/Renderer.h>
@@ -41,14 +44,20 @@ struct Outcome {
     std::string gl, reference;
 };
 
+Outcome renderBoth(Node& root, bool reference = true);
+
 Outcome renderBoth(const std::string& text, bool reference = true) {
-    Outcome out;
     const ref_ptr<Node> root = readSceneFromString(text, "hostile.iv");
+    return renderBoth(*root, reference);
+}
+
+Outcome renderBoth(Node& root, bool reference) {
+    Outcome out;
     RenderOptions options;
     options.width = options.height = 32;
     Renderer renderer;
     try {
-        (void)renderer.render(*root, options);
+        (void)renderer.render(root, options);
     } catch (const Error& e) {
         out.gl = e.what();
     }
@@ -56,7 +65,7 @@ Outcome renderBoth(const std::string& text, bool reference = true) {
     try {
         RayCastOptions rays;
         rays.tolerance = 1e-2;
-        (void)renderReference(*root, options, nullptr, rays);
+        (void)renderReference(root, options, nullptr, rays);
     } catch (const Error& e) {
         out.reference = e.what();
     }
@@ -243,4 +252,41 @@ TEST_CASE("a data file names files only inside its own folder, as glTF files do"
     }
     CHECK(message.find("symbolic link") != std::string::npos);
     fs::remove_all(root);
+}
+
+// Found by fuzz-scenegraph: fields set to NaN or infinity through the API (the reader refuses
+// them in text) reached the engines. Each is refused where the node acts, naming it.
+TEST_CASE("non-finite BoxClip values set in code are refused by every volume path") {
+    OSMesaContext context;
+    for (const char* field : {"outsideColor", "insideColor", "insideOpacity", "outsideOpacity",
+                              "insideColorWeight", "outsideColorWeight", "origin", "extent"}) {
+        CAPTURE(field);
+        const std::string text = volumeScene(kOrtho + " DEF B BoxClip { }");
+        const ref_ptr<Node> root = readSceneFromString(text, "hostile.iv");
+        Node* box = nullptr;
+        for (const ref_ptr<Node>& child : *root->children())
+            if (child->getName() == "B") box = child.get();
+        REQUIRE(box);
+        Field* f = box->field(field);
+        REQUIRE(f);
+        if (auto* s = dynamic_cast<SFFloat*>(f)) s->setValue(std::nanf(""));
+        if (auto* c = dynamic_cast<SFColor*>(f)) c->setValue(glm::vec3(std::nanf(""), 0, 0));
+        if (auto* v = dynamic_cast<SFVec3f*>(f))
+            v->setValue(glm::vec3(0, std::numeric_limits<float>::infinity(), 0));
+        checkRefusedByBoth(renderBoth(*root), "BoxClip", "not a finite number");
+    }
+}
+
+// Found by fuzz-scenegraph: without a camera, a scene whose bounding box is too large for the
+// camera made to view it all was refused as "OrthographicCamera: ..." with no file or node.
+TEST_CASE("a scene too large for the camera made to view it all is refused naming its file") {
+    OSMesaContext context;
+    for (const char* volume : {"Volume { }", "ShearWarpVolume { VolumeObject { } }"}) {
+        CAPTURE(volume);
+        const std::string text = kHeader +
+                                 "Separator {\nCoordinate3 { point [ -3e38 -3e38 0, 3e38 3e38 0 ] "
+                                 "}\nPointSet { }\n" +
+                                 kSphere + volume + "\n}\n";
+        checkRefusedByBoth(renderBoth(text), "Separator", "the scene has no camera");
+    }
 }

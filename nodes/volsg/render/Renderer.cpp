@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 
 namespace volsg {
 
@@ -59,7 +60,21 @@ SceneCamera makeViewAllCamera(Node& root, double aspect, bool orthographic) {
         camera = OrthographicCamera::create();
     else
         camera = PerspectiveCamera::create();
-    camera->viewAll(computeBoundingBox(root), aspect);
+    const Box3 box = computeBoundingBox(root);
+    camera->viewAll(box, aspect);
+    try {
+        camera->check(glm::dmat4(1.0));
+    } catch (const Error& e) {
+        // The camera was made, not read: what is at fault is the scene's extent.
+        char extent[160];
+        std::snprintf(extent, sizeof extent, "from (%.3g, %.3g, %.3g) to (%.3g, %.3g, %.3g)",
+                      box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z);
+        const Error why("the scene has no camera, and none can view its bounding box " +
+                        std::string(extent) + " whole (" + e.message() + "): give it a camera");
+        const SourcePlace& place = root.sourcePlace();
+        if (!place.file) throw why;
+        throw Error::atSceneNode(why, root.description(), *place.file, place.line, place.column);
+    }
     return {camera, glm::dmat4(1.0)};
 }
 
