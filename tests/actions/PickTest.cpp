@@ -357,8 +357,11 @@ TEST_CASE("a sphere is picked on the true sphere, as Coin picks it, not on its t
         root->addChild(sphere);
         const auto camera = orthoCamera(6.0f);
         const double r = 2.0;
-        for (auto [px, py] : {std::pair{49.5, 49.5}, std::pair{60.0, 45.0}, std::pair{35.0, 62.0},
-                              std::pair{70.0, 70.0}, std::pair{50.0, 17.0}}) {
+        for (const auto& [x, y] :
+             {std::pair{49.5, 49.5}, std::pair{60.0, 45.0}, std::pair{35.0, 62.0},
+              std::pair{70.0, 70.0}, std::pair{50.0, 17.0}}) {
+            // Copies: structured bindings cannot be captured by CAPTURE's lambda under clang 14.
+            const double px = x, py = y;
             CAPTURE(px);
             CAPTURE(py);
             const auto hit = pickPixel(*root, camera, px, py, 100, 100);
