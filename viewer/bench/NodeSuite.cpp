@@ -12,6 +12,7 @@
 
 #include "ImageError.h"
 #include "ReferenceViews.h"
+#include <volsg/actions/SearchAction.h>
 #include <volsg/core/Error.h>
 #include <volsg/gl/GlLoader.h>
 #include <volsg/io/SceneReader.h>
@@ -54,15 +55,6 @@ double medianOf(std::vector<double> v) {
     return s.median();
 }
 
-Volume* findVolume(Node& node) {
-    if (node.getName() == kVolumeName && node.isA<Volume>()) return static_cast<Volume*>(&node);
-    if (auto* children = node.children())
-        for (const auto& child : *children)
-            if (child)
-                if (Volume* v = findVolume(*child)) return v;
-    return nullptr;
-}
-
 /// One case loaded: its scene, the Volume the rows change, the orbit views.
 struct LoadedCase {
     std::string name;
@@ -77,7 +69,8 @@ LoadedCase loadCase(const NodeCase& c, const NodeSuiteSettings& st) {
     out.name = c.name;
     const fs::path file = fs::path(st.scenesDir) / c.file;
     out.root = readScene(file.string());
-    out.volume = findVolume(*out.root);
+    Node* named = findByName(*out.root, kVolumeName);
+    out.volume = named && named->isA<Volume>() ? static_cast<Volume*>(named) : nullptr;
     if (!out.volume) throw Error(file.string() + " has no Volume named " + kVolumeName);
     const RenderOptions options = suiteOptions(st);
     out.views = makeOrbitViews(*out.root, options, st.frames, st.errorFrames);

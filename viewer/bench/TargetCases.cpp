@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "ImageError.h"
+#include <volsg/actions/SearchAction.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/volumescene/ReferenceScene.h>
@@ -111,15 +112,6 @@ std::string writeNoisySphere(const fs::path& dir, int n) {
     return file.string();
 }
 
-Volume* findVolume(Node& node) {
-    if (node.getName() == kVolumeName && node.isA<Volume>()) return static_cast<Volume*>(&node);
-    if (auto* children = node.children())
-        for (const auto& child : *children)
-            if (child)
-                if (Volume* v = findVolume(*child)) return v;
-    return nullptr;
-}
-
 } // namespace
 
 std::vector<TargetCaseSpec> targetCaseSpecs(const std::string& dataDir, bool large) {
@@ -215,7 +207,8 @@ SweepCase loadTargetCase(const TargetCaseSpec& spec, const RenderDebug& debug,
     SweepCase c;
     c.name = spec.name;
     c.root = readSceneFromString(spec.text, spec.name + ".iv");
-    c.volume = findVolume(*c.root);
+    Node* named = findByName(*c.root, kVolumeName);
+    c.volume = named && named->isA<Volume>() ? static_cast<Volume*>(named) : nullptr;
     if (!c.volume) throw Error("sweep case " + spec.name + " has no " + kVolumeName);
     c.options.width = spec.width;
     c.options.height = spec.height;
