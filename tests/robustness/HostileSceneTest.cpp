@@ -290,3 +290,25 @@ TEST_CASE("a scene too large for the camera made to view it all is refused namin
         checkRefusedByBoth(renderBoth(text), "Separator", "the scene has no camera");
     }
 }
+
+// Found by fuzz-scenegraph: a Text2 of 100,000 characters under a USE chain of 4096 instances
+// laid out 400 million characters in one frame (each instance is laid out again).
+TEST_CASE("screen text is bounded as a frame total of characters") {
+    OSMesaContext context;
+    std::string text = kHeader + "Separator {\n" + kOrtho +
+                       "\nDEF S0 Separator { Text2 { string \"" + std::string(100000, 'W') +
+                       "\" } }\n";
+    for (int i = 1; i <= 12; ++i)
+        text += "DEF S" + std::to_string(i) + " Separator { USE S" + std::to_string(i - 1) +
+                " USE S" + std::to_string(i - 1) + " }\n";
+    text += "}\n";
+    const Outcome o = renderBoth(text, false);
+    CAPTURE(o.gl);
+    CHECK(o.gl.rfind("hostile.iv:", 0) == 0);
+    CHECK(o.gl.find("Text2") != std::string::npos);
+    CHECK(o.gl.find("screen-text characters in one frame") != std::string::npos);
+    // One such text alone is drawn.
+    const std::string once = kHeader + "Separator {\n" + kOrtho + "\nText2 { string \"" +
+                             std::string(100000, 'W') + "\" }\n}\n";
+    CHECK(renderBoth(once, false).gl.empty());
+}

@@ -79,6 +79,8 @@ struct FrameContext {
     RenderDebug debug;
     /// Volume nodes drawn so far in this frame, every USE counted (limits::maxVolumeInstances).
     std::uint64_t volumeInstances = 0;
+    /// Screen-text characters laid out so far in this frame (limits::maxFrameTextGlyphs).
+    std::uint64_t textGlyphs = 0;
 };
 
 } // namespace volsg
