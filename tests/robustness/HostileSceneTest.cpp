@@ -312,3 +312,18 @@ TEST_CASE("screen text is bounded as a frame total of characters") {
                              std::string(100000, 'W') + "\" }\n}\n";
     CHECK(renderBoth(once, false).gl.empty());
 }
+
+// Found by fuzz-scenegraph: an Array with no copies along one axis and 2^31-1 along another
+// ran 2^31 empty loops in every traversal (80 s a frame under ASan).
+TEST_CASE("an Array with a zero count draws nothing at once, whatever its other counts") {
+    OSMesaContext context;
+    for (const char* counts : {"numElements1 0 numElements3 2147483647",
+                               "numElements1 -479303389 numElements2 2147483647",
+                               "numElements2 2147483647 numElements3 0"}) {
+        CAPTURE(counts);
+        const std::string text = kHeader + "Separator {\n" + kOrtho + "\nArray { " + counts +
+                                 " Cube { } }\n" + kSphere + "Volume { }\n}\n";
+        const Outcome o = renderBoth(text, false);
+        CHECK(o.gl.empty());
+    }
+}

@@ -92,6 +92,9 @@ void Array::doAction(Action& action) {
                     " has " + std::to_string(n1) + " x " + std::to_string(n2) + " x " +
                     std::to_string(n3) + " copies; at most " + std::to_string(maxCopies) +
                     " are drawn");
+    // No copies: nothing to traverse (numElements1 0 with numElements3 2^31-1 spun through 2^31
+    // empty loops).
+    if (copies == 0) return;
     State& state = action.state();
     for (int k = 0; k < n3; ++k)
         for (int j = 0; j < n2; ++j)
