@@ -13,6 +13,8 @@
 
 #include <volsg/context/OSMesaContext.h>
 #include <volsg/core/Error.h>
+#include <volsg/engines/AnimatedNodes.h>
+#include <volsg/engines/Evaluator.h>
 #include <volsg/fields/Fields.h>
 #include <volsg/image/Image.h>
 #include <volsg/io/SceneReader.h>
@@ -325,5 +327,20 @@ TEST_CASE("an Array with a zero count draws nothing at once, whatever its other 
                                  " Cube { } }\n" + kSphere + "Volume { }\n}\n";
         const Outcome o = renderBoth(text, false);
         CHECK(o.gl.empty());
+    }
+}
+
+// Found by fuzz-scenegraph (UBSan): a Blinker whose speed code set to infinity turned a NaN
+// phase into an int.
+TEST_CASE("a Blinker of infinite speed shows a child that exists") {
+    const ref_ptr<Node> root = readSceneFromString(
+        kHeader + "Separator { DEF B Blinker { Cube { } Sphere { } Cone { } } }\n", "hostile.iv");
+    auto* blinker = dynamic_cast<Blinker*>(root->children()->front().get());
+    REQUIRE(blinker);
+    blinker->speed = std::numeric_limits<float>::infinity();
+    for (double t : {0.0, 0.5, 1.0}) {
+        evaluateConnections(*root, t);
+        CHECK(blinker->whichChild() >= 0);
+        CHECK(blinker->whichChild() < 3);
     }
 }
