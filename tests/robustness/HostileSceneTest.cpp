@@ -316,12 +316,14 @@ TEST_CASE("screen text is bounded as a frame total of characters") {
 }
 
 // Found by fuzz-scenegraph: an Array with no copies along one axis and 2^31-1 along another
-// ran 2^31 empty loops in every traversal (80 s a frame under ASan).
-TEST_CASE("an Array with a zero count draws nothing at once, whatever its other counts") {
+// ran 2^31 empty loops in every traversal (80 s a frame under ASan); an empty Array of 65536
+// copies inside another ran 2^32 (the instance total counts nodes, and it reached none).
+TEST_CASE("an Array with a zero count or no children draws nothing at once") {
     OSMesaContext context;
     for (const char* counts : {"numElements1 0 numElements3 2147483647",
                                "numElements1 -479303389 numElements2 2147483647",
-                               "numElements2 2147483647 numElements3 0"}) {
+                               "numElements2 2147483647 numElements3 0",
+                               "numElements2 65536 Array { numElements1 65536 }"}) {
         CAPTURE(counts);
         const std::string text = kHeader + "Separator {\n" + kOrtho + "\nArray { " + counts +
                                  " Cube { } }\n" + kSphere + "Volume { }\n}\n";
