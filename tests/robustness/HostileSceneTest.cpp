@@ -13,6 +13,8 @@
 
 #include <volsg/context/OSMesaContext.h>
 #include <volsg/core/Error.h>
+#include <volsg/engines/AnimatedNodes.h>
+#include <volsg/engines/Evaluator.h>
 #include <volsg/fields/Fields.h>
 #include <volsg/image/Image.h>
 #include <volsg/io/SceneReader.h>
@@ -288,5 +290,59 @@ TEST_CASE("a scene too large for the camera made to view it all is refused namin
                                  "}\nPointSet { }\n" +
                                  kSphere + volume + "\n}\n";
         checkRefusedByBoth(renderBoth(text), "Separator", "the scene has no camera");
+    }
+}
+
+// Found by fuzz-scenegraph: a Text2 of 100,000 characters under a USE chain of 4096 instances
+// laid out 400 million characters in one frame (each instance is laid out again).
+TEST_CASE("screen text is bounded as a frame total of characters") {
+    OSMesaContext context;
+    std::string text = kHeader + "Separator {\n" + kOrtho +
+                       "\nDEF S0 Separator { Text2 { string \"" + std::string(100000, 'W') +
+                       "\" } }\n";
+    for (int i = 1; i <= 12; ++i)
+        text += "DEF S" + std::to_string(i) + " Separator { USE S" + std::to_string(i - 1) +
+                " USE S" + std::to_string(i - 1) + " }\n";
+    text += "}\n";
+    const Outcome o = renderBoth(text, false);
+    CAPTURE(o.gl);
+    CHECK(o.gl.rfind("hostile.iv:", 0) == 0);
+    CHECK(o.gl.find("Text2") != std::string::npos);
+    CHECK(o.gl.find("screen-text characters in one frame") != std::string::npos);
+    // One such text alone is drawn.
+    const std::string once = kHeader + "Separator {\n" + kOrtho + "\nText2 { string \"" +
+                             std::string(100000, 'W') + "\" }\n}\n";
+    CHECK(renderBoth(once, false).gl.empty());
+}
+
+// Found by fuzz-scenegraph: an Array with no copies along one axis and 2^31-1 along another
+// ran 2^31 empty loops in every traversal (80 s a frame under ASan); an empty Array of 65536
+// copies inside another ran 2^32 (the instance total counts nodes, and it reached none).
+TEST_CASE("an Array with a zero count or no children draws nothing at once") {
+    OSMesaContext context;
+    for (const char* counts : {"numElements1 0 numElements3 2147483647",
+                               "numElements1 -479303389 numElements2 2147483647",
+                               "numElements2 2147483647 numElements3 0",
+                               "numElements2 65536 Array { numElements1 65536 }"}) {
+        CAPTURE(counts);
+        const std::string text = kHeader + "Separator {\n" + kOrtho + "\nArray { " + counts +
+                                 " Cube { } }\n" + kSphere + "Volume { }\n}\n";
+        const Outcome o = renderBoth(text, false);
+        CHECK(o.gl.empty());
+    }
+}
+
+// Found by fuzz-scenegraph (UBSan): a Blinker whose speed code set to infinity turned a NaN
+// phase into an int.
+TEST_CASE("a Blinker of infinite speed shows a child that exists") {
+    const ref_ptr<Node> root = readSceneFromString(
+        kHeader + "Separator { DEF B Blinker { Cube { } Sphere { } Cone { } } }\n", "hostile.iv");
+    auto* blinker = dynamic_cast<Blinker*>(root->children()->front().get());
+    REQUIRE(blinker);
+    blinker->speed = std::numeric_limits<float>::infinity();
+    for (double t : {0.0, 0.5, 1.0}) {
+        evaluateConnections(*root, t);
+        CHECK(blinker->whichChild() >= 0);
+        CHECK(blinker->whichChild() < 3);
     }
 }

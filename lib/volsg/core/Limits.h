@@ -24,6 +24,9 @@ inline constexpr std::size_t maxSceneNodes = std::size_t(1) << 22;
 inline constexpr std::uint64_t maxTraversalInstances = std::uint64_t(1) << 24;
 /// Most volume nodes (Volume, ShearWarpVolume) one frame may draw, counting every USE.
 inline constexpr std::uint64_t maxVolumeInstances = 256;
+/// Most screen-text (Text2) characters one frame may lay out, counting every USE: each
+/// instance is laid out again (16 screens full of 8-pixel characters at 3840x2160).
+inline constexpr std::uint64_t maxFrameTextGlyphs = std::uint64_t(1) << 21;
 /// Most children of one node.
 inline constexpr std::size_t maxSceneChildren = std::size_t(1) << 20;
 /// Most values in one multiple-value field (MFFloat, MFVec3f, MFNode, ...).

@@ -103,6 +103,8 @@ struct FrameContext {
     std::size_t replayedShapes = 0;
     /// Separators left out in this render because their cached bounds lie outside the view.
     std::size_t culledSeparators = 0;
+    /// Screen-text characters laid out so far in this frame (limits::maxFrameTextGlyphs).
+    std::uint64_t textGlyphs = 0;
 };
 
 } // namespace volsg

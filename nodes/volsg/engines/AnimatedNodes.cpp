@@ -88,7 +88,9 @@ int Blinker::childAt(double phase, std::size_t children) {
     // Inventor's Blinker counts from 0 to the last child; with one child from -1 (none) to 0.
     const int lo = children == 1 ? -1 : 0;
     const int count = children == 1 ? 2 : int(children);
-    const double f = phase - std::floor(phase);
+    // A speed of infinity (set in code) makes the phase infinite: the first child, not an
+    // int made of NaN.
+    const double f = std::isfinite(phase) ? phase - std::floor(phase) : 0.0;
     return lo + std::min(count - 1, int(f * count));
 }
 

@@ -92,6 +92,10 @@ void Array::doAction(Action& action) {
                     " has " + std::to_string(n1) + " x " + std::to_string(n2) + " x " +
                     std::to_string(n3) + " copies; at most " + std::to_string(maxCopies) +
                     " are drawn");
+    // No copies or no children: nothing to traverse. The loops below count no instances by
+    // themselves, so numElements1 0 with numElements3 2^31-1, or an empty Array of 65536 copies
+    // inside another, spun for billions of empty iterations.
+    if (copies == 0 || getNumChildren() == 0) return;
     State& state = action.state();
     for (int k = 0; k < n3; ++k)
         for (int j = 0; j < n2; ++j)
@@ -105,6 +109,7 @@ void Array::doAction(Action& action) {
 }
 
 void MultipleCopy::doAction(Action& action) {
+    if (getNumChildren() == 0) return; // as Array: copies of nothing are nothing
     State& state = action.state();
     for (const glm::mat4& m : matrix()) {
         if (action.isTerminated()) return;

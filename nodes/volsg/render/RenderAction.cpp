@@ -45,6 +45,14 @@ void RenderAction::countVolumeInstance() {
                     " volume instances in one frame (every USE of a volume draws it again)");
 }
 
+void RenderAction::countTextGlyphs(std::size_t glyphs) {
+    frame_.textGlyphs += glyphs;
+    if (frame_.textGlyphs > limits::maxFrameTextGlyphs)
+        throw Error("more than " + std::to_string(limits::maxFrameTextGlyphs) +
+                    " screen-text characters in one frame (every USE of a Text2 lays it out "
+                    "again)");
+}
+
 void RenderAction::lightsInScope(std::vector<SceneLight>& out) const {
     out.clear();
     if (frame_.view.headlight) {

@@ -39,6 +39,9 @@ public:
     /// Counts one more volume drawn in this frame; throws Error past limits::maxVolumeInstances
     /// (each volume costs a whole pass over its data: 100,000 USEs of one would never end).
     void countVolumeInstance();
+    /// Counts `glyphs` more screen-text characters laid out in this frame; throws Error past
+    /// limits::maxFrameTextGlyphs (a long Text2 USEd thousands of times would never end).
+    void countTextGlyphs(std::size_t glyphs);
 
     /// The lights in scope at the current node (plus the headlight when the scene has no
     /// light), in world coordinates. Fills `out` (cleared first) to reuse its memory.

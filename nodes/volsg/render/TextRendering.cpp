@@ -22,6 +22,7 @@ void renderText2(RenderAction& action, Text2& text) {
     if (scope.drawStyle && scope.drawStyle->style() == DrawStyle::INVISIBLE) return;
     std::shared_ptr<FontFace> face;
     const ScreenText layout = screenTextInScope(text, state, face);
+    action.countTextGlyphs(layout.glyphs.size());
     if (layout.glyphs.empty()) return;
     const glm::dvec3 anchor(state.modelMatrix() * glm::dvec4(0.0, 0.0, 0.0, 1.0));
     // A ClipPlane that removes the origin removes the text (Coin's raster position).

@@ -41,9 +41,11 @@ struct FuzzWorld {
     bool print = false;
 };
 
+/// Never destroyed: OSMesaDestroyContext from a static destructor deadlocks in llvmpipe, whose
+/// threads Mesa's own exit handlers have already stopped (libFuzzer then hung after its run).
 FuzzWorld& world() {
-    static FuzzWorld w;
-    return w;
+    static FuzzWorld* w = new FuzzWorld;
+    return *w;
 }
 
 /// The files the generator's kSceneFileMenu names, in the scratch folder.
