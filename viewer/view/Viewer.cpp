@@ -711,7 +711,10 @@ void Viewer::screenshot(const std::string& path, bool sceneOnly) {
         writePng(path, image);
         std::error_code ec;
         const auto where = std::filesystem::absolute(path, ec);
-        status("screenshot saved to " + (ec ? path : where.string()));
+        // The scene time of the frame shown, for a scene that engines or animated nodes change.
+        char when[64] = "";
+        if (sceneChanges_) std::snprintf(when, sizeof when, " (scene time %.4f s)", sceneSeconds_);
+        status("screenshot saved to " + (ec ? path : where.string()) + when);
     } catch (const Error& e) {
         status(std::string("screenshot failed: ") + e.what());
         exitStatus_ = 1;
@@ -1046,9 +1049,9 @@ void Viewer::frame() {
     followSceneEdits();
     // Engines, field connections and animated nodes (Rotor, Blinker, ...) run on the viewer's
     // clock; a field they change redraws the views (the frame's signature sees its version).
-    engines_.evaluate(
-        *root_,
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - startTime_).count());
+    sceneSeconds_ =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - startTime_).count();
+    if (engines_.evaluate(*root_, sceneSeconds_) > 0) sceneChanges_ = true;
     tfPanel_.deferHistogram = refineStage_ == 0; // the first image before the histogram
     if (options_.panels) drawPanels();
     progressText_ = refineStage_ == 0 ? "first image at a quarter of the resolution: refining..."

@@ -274,7 +274,9 @@ private:
     static constexpr double kFirstImageResolution = 0.25;
     int refineStage_ = 0; ///< frames since the scene was loaded, up to 2
     std::chrono::steady_clock::time_point startTime_;
-    PatientAxes patientAxes_; ///< how the first volume's axes run in patient coordinates
+    double sceneSeconds_ = 0.0; ///< the scene time of this frame (engines_, on the viewer's clock)
+    bool sceneChanges_ = false; ///< engines or animated nodes have changed a field
+    PatientAxes patientAxes_;   ///< how the first volume's axes run in patient coordinates
     std::map<std::string, std::pair<glm::vec2, glm::vec2>> canvases_; ///< scripted UI places
     /// Which sections of the panel column are open; `revealPanel_` names one the script opened
     /// (it is opened and scrolled into view on the next frame).

@@ -29,6 +29,7 @@
 //   cursor I J K                    the 3D cursor on voxel (I, J, K) of the first volume
 //   region K                        the readout's histogram region: K^3 voxels
 //   screenshot FILE [scene]         the window with its panels; `scene`: the scene alone
+//                                   (an animated scene's time is reported with it)
 //   save FILE                       the edited scene (docs/SCENE-FORMAT.md)
 //   step N                          show step N of the first VolumeSeries (pauses)
 //   play | pause                    play the series on / pause it
