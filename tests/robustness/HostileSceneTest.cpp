@@ -346,3 +346,16 @@ TEST_CASE("a Blinker of infinite speed shows a child that exists") {
         CHECK(blinker->whichChild() < 3);
     }
 }
+
+// Found by fuzz-scenegraph's runs: a node whose message names itself was named twice
+// ("Array 'N4': Array 'N4' has ...").
+TEST_CASE("a render-time message names its node once") {
+    OSMesaContext context;
+    const Outcome o = renderBoth(kHeader + "Separator {\n" + kOrtho +
+                                     "\nDEF N4 Array { numElements1 100000 numElements2 100000 "
+                                     "Cube { } }\n}\n",
+                                 false);
+    CAPTURE(o.gl);
+    CHECK(o.gl.rfind("hostile.iv:4:8: Array 'N4' has 100000 x 100000 x 1 copies", 0) == 0);
+    CHECK(o.gl.find("N4", o.gl.find("N4") + 2) == std::string::npos);
+}

@@ -74,7 +74,11 @@ Error::Error(std::string message, std::string file, int line, int column)
 
 Error Error::atSceneNode(const std::exception& inner, const std::string& node,
                          const std::string& file, int line, int column) {
-    Error e(node + ": " + inner.what(), file, line, column);
+    // A message that starts by naming its node ("Array 'N4' has ...") is not prefixed again.
+    const std::string_view what = inner.what();
+    const bool named = what.starts_with(node) && what.size() > node.size() &&
+                       (what[node.size()] == ' ' || what[node.size()] == ':');
+    Error e(named ? std::string(what) : node + ": " + std::string(what), file, line, column);
     e.namesSceneNode_ = true;
     return e;
 }
