@@ -29,7 +29,7 @@ TEST_CASE("A ray through a sphere's centre crosses it at both poles of its path"
     CHECK(intersectSphere(Ray{{0, 0, 10}, {0, 0, -1}}, std::nan("")).empty());
 }
 
-TEST_CASE("A cylinder's side stops at its height; its caps are discs") {
+TEST_CASE("A cylinder's side stops at its height, its caps are discs") {
     // Radius 1, height 2: a horizontal ray at y = 0.5 crosses the side at x = +-1.
     const auto side = intersectCylinderSide(Ray{{5, 0.5, 0}, {-1, 0, 0}}, 1.0, 2.0);
     REQUIRE(side.size() == 2);

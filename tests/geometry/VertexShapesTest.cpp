@@ -241,7 +241,7 @@ TEST_CASE("a point set draws numPoints points from startIndex") {
     CHECK(m.indices.size() == 2u); // never beyond the points
 }
 
-TEST_CASE("face sets take numVertices consecutive points; -1 takes the rest") {
+TEST_CASE("face sets take numVertices consecutive points, -1 takes the rest") {
     VertexAttributes a;
     a.points = kCubePoints;
     const std::vector<std::int32_t> counts = {4, -1};
@@ -269,7 +269,7 @@ TEST_CASE("a concave polygon is cut into triangles covering exactly its area") {
     CHECK(triangleArea(m) == doctest::Approx(11.0));
 }
 
-TEST_CASE("given normals bind by coordIndex, normalIndex or per face; too few generate") {
+TEST_CASE("given normals bind by coordIndex, normalIndex or per face, too few generate") {
     const ShapeTopology t = makeIndexedFaceSetTopology(kCubeFaces, kCubePoints.size());
     VertexAttributes a;
     a.points = kCubePoints;

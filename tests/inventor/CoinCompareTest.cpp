@@ -69,7 +69,7 @@ TEST_CASE("the colour difference is per channel in [0,1], averaged over RGB and 
     CHECK(c.colourDifference == doctest::Approx(expected).epsilon(1e-12));
 }
 
-TEST_CASE("identical images agree; two empty images agree that nothing is seen") {
+TEST_CASE("identical images agree, two empty images agree that nothing is seen") {
     Image8 a(3, 3);
     a.at(1, 1) = {10, 20, 30};
     const Comparison same = compare(a, black, a, black);

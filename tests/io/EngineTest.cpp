@@ -332,7 +332,7 @@ TEST_CASE("the global field realTime is the scene time") {
     CHECK(cube->width() == 2.5f);
 }
 
-TEST_CASE("a node field connected to another node's field follows it; versions change only "
+TEST_CASE("a node field connected to another node's field follows it, versions change only "
           "with values") {
     auto root = read("Separator { DEF a Transform { translation 1 2 3 }"
                      "  Transform { translation 0 0 0 = USE a.translation }"

@@ -374,7 +374,7 @@ DEF ROBOT ShapeKit {
     CHECK(boxNear(box, {-6.75, -24.0, -1.2}, {1.0, 5.0, 3.8}, 1e-5));
 }
 
-TEST_CASE("default kit parts are not written; parts set to NULL are") {
+TEST_CASE("default kit parts are not written, parts set to NULL are") {
     auto kit = ShapeKit::create();
     CHECK(writeSceneToString(*kit) == "#Inventor V2.1 ascii\n\nShapeKit {\n}\n");
     auto xf = Transform::create();

@@ -76,7 +76,7 @@ TEST_CASE("FaceSet with PER_FACE materials colours each face with its own materi
     CHECK(coveredPixels(image) == 512);
 }
 
-TEST_CASE("OVERALL binding uses the first material; BaseColor replaces only the diffuse") {
+TEST_CASE("OVERALL binding uses the first material, BaseColor replaces only the diffuse") {
     Offscreen gl;
     const Image overall = gl.render(kTwoSquares + R"(
         Material { diffuseColor [ 0 1 0, 0 0 1 ] }
@@ -173,7 +173,7 @@ TEST_CASE("PointSet draws one pixel per point, sized by DrawStyle pointSize") {
     CHECK(coveredPixels(gl.render(points + "DrawStyle { pointSize 3 } PointSet { }")) == 27);
 }
 
-TEST_CASE("LineSet PER_PART colours each segment; lineWidth widens the lines") {
+TEST_CASE("LineSet PER_PART colours each segment, lineWidth widens the lines") {
     Offscreen gl;
     const Image image = gl.render(R"(
         Material { diffuseColor [ 1 0 0, 0 0 1 ] }
@@ -207,7 +207,7 @@ TEST_CASE("DrawStyle LINES outlines polygons, POINTS draws their corners, INVISI
     CHECK(coveredPixels(gl.render(square + "DrawStyle { style INVISIBLE } FaceSet { }")) == 0);
 }
 
-TEST_CASE("ShapeHints SOLID with a known ordering culls back faces; unknown draws both") {
+TEST_CASE("ShapeHints SOLID with a known ordering culls back faces, unknown draws both") {
     Offscreen gl;
     // Clockwise seen from the camera (+Z): a back face under COUNTERCLOCKWISE.
     const std::string backFacing = R"(

@@ -437,7 +437,7 @@ TEST_CASE("WrapperKit draws its contents under localTransform") {
     CHECK(coveredRect(image) == expectedRect(-1.5, -1.5, -0.5, -0.5));
 }
 
-TEST_CASE("LightKit places its light by its transform; the light stays in scope after it") {
+TEST_CASE("LightKit places its light by its transform, the light stays in scope after it") {
     Offscreen gl;
     // The light shines along +x in its coordinates; about Y by +90 degrees that is -z, onto
     // the cube's front face (diffuse 0.8 + 0.2 x 0.2 ambient = 0.84); by -90 degrees it is +z,

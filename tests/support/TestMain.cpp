@@ -16,6 +16,7 @@
 namespace {
 
 bool glErrorsSeen = false;
+int testCasesStarted = 0;
 
 void reportGlErrors(const char* testCase) {
     const std::vector<std::string> errors = volsg::takeGlDebugErrors();
@@ -34,6 +35,7 @@ struct GlErrorListener : doctest::IReporter {
     void test_run_end(const doctest::TestRunStats&) override {}
     void test_case_start(const doctest::TestCaseData& data) override {
         current_ = data.m_name;
+        ++testCasesStarted;
         volsg::takeGlDebugErrors(); // from before: not this test's
     }
     void test_case_reenter(const doctest::TestCaseData&) override {}
@@ -64,6 +66,16 @@ int main(int argc, char** argv) {
     doctest::Context context(argc, argv);
     const int result = context.run();
     if (context.shouldExit()) return result;
+    // ctest names one test case per run (doctest_discover_tests); a name the filter cannot
+    // match (CMake splits names at ';') would otherwise pass without running anything.
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if ((arg.rfind("--test-case=", 0) == 0 || arg.rfind("-tc=", 0) == 0) &&
+            testCasesStarted == 0) {
+            std::fprintf(stderr, "[filter] no test case matches %s: failing\n", arg.c_str());
+            return result != 0 ? result : 1;
+        }
+    }
     if (glErrorsSeen) {
         std::fprintf(stderr, "[gl-errors] GL errors were reported (see above): failing\n");
         return result != 0 ? result : 1;

@@ -267,7 +267,7 @@ TEST_CASE("per-part materials colour the front, sides and back of Text3") {
     }
 }
 
-TEST_CASE("AsciiText is the flat front of Text3; width stretches the pen positions") {
+TEST_CASE("AsciiText is the flat front of Text3, width stretches the pen positions") {
     const Mesh text3 = meshOf(read("Font { size 3 } Text3 { string \"Ab\" parts ALL }"));
     const Mesh ascii = meshOf(read("Font { size 3 } AsciiText { string \"Ab\" }"));
     CHECK(facingArea(ascii, 1.0) == doctest::Approx(facingArea(text3, 1.0)));

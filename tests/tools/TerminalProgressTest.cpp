@@ -31,7 +31,7 @@ TEST_CASE("the progress line: a bar of # and ., the percentage, the stage, erase
     CHECK(progressLine("t", 0.0 / 0.0, "", 4) == "\rt [....]   0%  \x1b[K"); // NaN: nothing done
 }
 
-TEST_CASE("a file is not a terminal: nothing is written; forced, the line is drawn and erased") {
+TEST_CASE("a file is not a terminal: nothing is written, forced, the line is drawn and erased") {
     std::FILE* file = std::tmpfile();
     REQUIRE(file);
     {

@@ -193,7 +193,7 @@ TEST_CASE("MetaImage Offset and TransformMatrix give the geometry") {
     CHECK_FALSE(readRawVolume(dir.file("v.raw"), RawVolumeLayout{{2, 2, 2}})->geometry().known);
 }
 
-TEST_CASE("NIfTI without qform or sform: pixdim spacing, no geometry; .hdr/.img pairs") {
+TEST_CASE("NIfTI without qform or sform: pixdim spacing, no geometry, .hdr/.img pairs") {
     TempDir dir;
     writeBytes(dir.file("small.nii"), smallNifti());
     const ref_ptr<VolumeGrid> grid = readVolume(dir.file("small.nii"));

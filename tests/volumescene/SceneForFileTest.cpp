@@ -90,7 +90,7 @@ double difference(const glm::vec4& a, const glm::vec3& b) {
 
 } // namespace
 
-TEST_CASE("file kinds come from names and magic bytes; binary bytes never reach a message") {
+TEST_CASE("file kinds come from names and magic bytes, binary bytes never reach a message") {
     CHECK(fileKindOf(data + "/derived/headsq_32x32x24_int16.nii.gz") == FileKind::Volume);
     CHECK(fileKindOf(data + "/derived/headsq_dicom") == FileKind::Volume);
     CHECK(fileKindOf(data + "/vtkjs-lidc2/lidc2_chest.nhdr") == FileKind::Volume);
