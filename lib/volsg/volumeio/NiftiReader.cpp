@@ -272,15 +272,15 @@ ref_ptr<VolumeGrid> applyScaling(ref_ptr<VolumeGrid> stored, const NiftiHeader& 
     return out;
 }
 
-// The .img of a .hdr/.img pair ("ni1"): same stem, .img or .img.gz.
-std::string pairedImagePath(const std::string& path, const InputFile& file) {
+// The .img of a .hdr/.img pair ("ni1"): same stem, .img or .img.gz; its name, beside the header.
+std::string pairedImageName(const std::string& path, const InputFile& file) {
     std::filesystem::path p(path);
     const bool gz = HeaderLineReader::lowercase(p.extension().string()) == ".gz";
     if (gz) p.replace_extension(); // name.hdr.gz -> name.hdr
     for (const char* candidate : {".img", ".img.gz"}) {
         std::filesystem::path img = p;
         img.replace_extension(candidate);
-        if (std::filesystem::exists(img)) return img.string();
+        if (std::filesystem::exists(img)) return img.filename().string();
     }
     file.fail("NIfTI header says its voxels are in a separate .img file, and none is beside it");
 }
@@ -304,7 +304,7 @@ ref_ptr<VolumeGrid> readNifti(const std::string& path, std::uint64_t byteLimit) 
     if (h.voxOffset < 0) file.fail("NIfTI vox_offset is negative");
 
     std::unique_ptr<InputFile> detached;
-    if (!h.singleFile) detached = InputFile::openDataFile(path, pairedImagePath(path, file));
+    if (!h.singleFile) detached = InputFile::openDataFile(path, pairedImageName(path, file));
     InputFile& data = detached ? *detached : file;
     data.seek(0);
     unsigned char dataMagic[2] = {0, 0};
