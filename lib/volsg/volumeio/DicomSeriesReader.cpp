@@ -10,7 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
+#include <span>
 #include <vector>
 
 #include <gdcmAttribute.h>
@@ -20,6 +22,8 @@
 #include <gdcmTrace.h>
 
 #include <volsg/core/Error.h>
+#include <volsg/volumeio/DicomLengths.h>
+#include <volsg/volumeio/IsolatedCall.h>
 #include <volsg/volumeio/VolumeReader.h>
 #include <volsg/volumeio/VoxelPayload.h>
 
@@ -29,6 +33,8 @@ namespace {
 
 /// Most files a folder may hold for a series to be read from it.
 constexpr std::size_t maxSeriesFiles = 20000;
+/// Largest file read as one slice (a 16384^2 slice of 32-bit values is 1 GiB).
+constexpr std::uintmax_t maxSliceFileBytes = std::uintmax_t(1) << 30;
 
 const gdcm::Tag pixelDataTag(0x7fe0, 0x0010);
 
@@ -114,14 +120,36 @@ bool readSliceHeaderUnguarded(const std::string& path, Slice& s) {
     return true;
 }
 
-// readSliceHeaderUnguarded, with whatever GDCM throws on malformed input (bad_alloc for an
-// absurd element length, its own exceptions) taken as "not a DICOM file GDCM can read".
-bool readSliceHeader(const std::string& path, Slice& s) {
-    try {
-        return readSliceHeaderUnguarded(path, s);
-    } catch (const std::exception&) {
-        return false;
+// Why the file cannot be a DICOM slice whose every declared length fits in it, or "": GDCM
+// sizes buffers from declared lengths, so they are checked first (DicomLengths.h).
+std::string lengthProblem(const std::string& path, DicomPixelData* pixels = nullptr) {
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) return "cannot read it: " + ec.message();
+    if (size > maxSliceFileBytes)
+        return "larger than " + std::to_string(maxSliceFileBytes) +
+               " bytes, more than one single-frame slice takes";
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
+        return "cannot read it";
+    return dicomLengthProblem(bytes, pixels);
+}
+
+// readSliceHeaderUnguarded after the length check, with whatever GDCM throws on malformed input
+// taken as "not a DICOM file GDCM can read"; `why` (when given) says what was wrong.
+bool readSliceHeader(const std::string& path, Slice& s, std::string* why = nullptr) {
+    std::string problem = lengthProblem(path);
+    if (problem.empty()) {
+        try {
+            if (readSliceHeaderUnguarded(path, s)) return true;
+            problem = "GDCM cannot parse it";
+        } catch (const std::exception&) {
+            problem = "GDCM cannot parse it";
+        }
     }
+    if (why) *why = std::move(problem);
+    return false;
 }
 
 // The files that may hold the series: the folder's regular files, in name order.
@@ -141,27 +169,140 @@ std::vector<std::string> folderFiles(const std::filesystem::path& folder) {
     return files;
 }
 
+// A slice header as the isolated child hands it over (plain bytes in shared memory).
+struct SliceRecord {
+    bool ok = false;
+    char seriesUid[80] = {};
+    char why[240] = {};
+    int rows, columns, bitsAllocated, bitsStored, pixelRepresentation, samples, frames;
+    bool hasPosition, hasOrientation;
+    double position[3], rowDirection[3], columnDirection[3], pixelSpacing[2];
+    double sliceThickness, slope, intercept;
+};
+
+void copyText(char* to, std::size_t size, const std::string& text) {
+    const std::size_t n = std::min(text.size(), size - 1);
+    std::memcpy(to, text.data(), n);
+    to[n] = '\0';
+}
+
+SliceRecord toRecord(const Slice& s) {
+    SliceRecord r;
+    r.ok = true;
+    copyText(r.seriesUid, sizeof r.seriesUid, s.seriesUid);
+    r.rows = s.rows;
+    r.columns = s.columns;
+    r.bitsAllocated = s.bitsAllocated;
+    r.bitsStored = s.bitsStored;
+    r.pixelRepresentation = s.pixelRepresentation;
+    r.samples = s.samples;
+    r.frames = s.frames;
+    r.hasPosition = s.hasPosition;
+    r.hasOrientation = s.hasOrientation;
+    for (int i = 0; i < 3; ++i) {
+        r.position[i] = s.position[i];
+        r.rowDirection[i] = s.rowDirection[i];
+        r.columnDirection[i] = s.columnDirection[i];
+    }
+    r.pixelSpacing[0] = s.pixelSpacing[0];
+    r.pixelSpacing[1] = s.pixelSpacing[1];
+    r.sliceThickness = s.sliceThickness;
+    r.slope = s.slope;
+    r.intercept = s.intercept;
+    return r;
+}
+
+Slice fromRecord(const SliceRecord& r, const std::string& path) {
+    Slice s;
+    s.path = path;
+    s.seriesUid = r.seriesUid;
+    s.rows = r.rows;
+    s.columns = r.columns;
+    s.bitsAllocated = r.bitsAllocated;
+    s.bitsStored = r.bitsStored;
+    s.pixelRepresentation = r.pixelRepresentation;
+    s.samples = r.samples;
+    s.frames = r.frames;
+    s.hasPosition = r.hasPosition;
+    s.hasOrientation = r.hasOrientation;
+    s.position = {r.position[0], r.position[1], r.position[2]};
+    s.rowDirection = {r.rowDirection[0], r.rowDirection[1], r.rowDirection[2]};
+    s.columnDirection = {r.columnDirection[0], r.columnDirection[1], r.columnDirection[2]};
+    s.pixelSpacing = {r.pixelSpacing[0], r.pixelSpacing[1]};
+    s.sliceThickness = r.sliceThickness;
+    s.slope = r.slope;
+    s.intercept = r.intercept;
+    return s;
+}
+
+// The headers of `files`, read by GDCM in a child process (IsolatedCall.h): a slot per file,
+// empty where the file is not a DICOM slice GDCM reads, with the reason in `why`. A file on
+// which GDCM aborts is found by reading the files one child each.
+std::vector<std::optional<Slice>> readSliceHeaders(const std::vector<std::string>& files,
+                                                   std::vector<std::string>& why) {
+    std::vector<SliceRecord> records(files.size());
+    const auto readAll = [&](std::size_t begin, std::size_t end) {
+        return runIsolated((end - begin) * sizeof(SliceRecord),
+                           [&](std::span<std::byte> shared, std::string&) {
+                               for (std::size_t i = begin; i < end; ++i) {
+                                   Slice s;
+                                   std::string reason;
+                                   SliceRecord r;
+                                   if (readSliceHeader(files[i], s, &reason))
+                                       r = toRecord(s);
+                                   else
+                                       copyText(r.why, sizeof r.why, reason);
+                                   std::memcpy(shared.data() + (i - begin) * sizeof r, &r,
+                                               sizeof r);
+                               }
+                               return true;
+                           },
+                           [&](std::span<const std::byte> shared) {
+                               std::memcpy(static_cast<void*>(records.data() + begin),
+                                           shared.data(), (end - begin) * sizeof(SliceRecord));
+                           });
+    };
+    if (!readAll(0, files.size()).ok)
+        for (std::size_t i = 0; i < files.size(); ++i) {
+            const IsolatedOutcome one = readAll(i, i + 1);
+            if (!one.ok)
+                copyText(records[i].why, sizeof records[i].why,
+                         "GDCM stopped on it: " + one.message);
+        }
+    std::vector<std::optional<Slice>> out(files.size());
+    why.assign(files.size(), std::string());
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        if (records[i].ok)
+            out[i] = fromRecord(records[i], files[i]);
+        else
+            why[i] = records[i].why;
+    }
+    return out;
+}
+
 // The slices of the series `path` names: the named file's series, or the folder's largest.
 std::vector<Slice> collectSeries(const std::string& path) {
     std::error_code ec;
     const bool folder = std::filesystem::is_directory(path, ec);
     std::string wantedUid;
     if (!folder) {
-        Slice named;
         if (!std::filesystem::is_regular_file(path, ec))
             throw Error("cannot open DICOM file: No such file or directory", path);
-        if (!readSliceHeader(path, named))
-            throw Error("not a DICOM file (GDCM cannot parse it)", path);
-        wantedUid = named.seriesUid;
+        std::vector<std::string> why;
+        const auto named = readSliceHeaders({path}, why);
+        if (!named[0]) throw Error("not a DICOM file: " + why[0], path);
+        wantedUid = named[0]->seriesUid;
     }
     const std::filesystem::path where =
         folder ? std::filesystem::path(path) : std::filesystem::path(path).parent_path();
+    const std::vector<std::string> files = folderFiles(where.empty() ? "." : where);
+    std::vector<std::string> why;
+    std::vector<std::optional<Slice>> headers = readSliceHeaders(files, why);
     std::map<std::string, std::vector<Slice>> bySeries;
-    for (const std::string& file : folderFiles(where.empty() ? "." : where)) {
-        Slice s;
-        if (!readSliceHeader(file, s)) continue; // not DICOM: a README, a DICOMDIR's sibling
-        if (!folder && s.seriesUid != wantedUid) continue;
-        bySeries[s.seriesUid].push_back(std::move(s));
+    for (std::optional<Slice>& s : headers) {
+        if (!s) continue; // not DICOM: a README, a DICOMDIR's sibling
+        if (!folder && s->seriesUid != wantedUid) continue;
+        bySeries[s->seriesUid].push_back(std::move(*s));
     }
     if (bySeries.empty()) throw Error("no DICOM files in the folder", path);
     auto largest = std::max_element(bySeries.begin(), bySeries.end(), [](auto& a, auto& b) {
@@ -256,8 +397,20 @@ VoxelType gridTypeFor(const std::vector<Slice>& slices) {
     return VoxelType::Float;
 }
 
-// Decodes one slice's pixels (any transfer syntax GDCM knows) into `out`, rescaled.
-void readSlicePixels(const Slice& s, ref_ptr<VolumeGrid>& grid, int k, std::vector<char>& buffer) {
+// Decodes one slice's stored pixels (any transfer syntax GDCM knows) into `out`, which holds
+// rows x columns x bitsAllocated / 8 bytes. Runs in the isolated child.
+void decodeSlicePixels(const Slice& s, std::span<std::byte> out) {
+    // GDCM's raw codec copies as many bytes as the image should have, whatever the pixel data
+    // holds (a heap over-read): native pixel data is measured first.
+    DicomPixelData pixels;
+    if (const std::string problem = lengthProblem(s.path, &pixels); !problem.empty())
+        throw Error("not a DICOM file: " + problem, s.path);
+    if (!pixels.found) throw Error("the slice has no pixel data", s.path);
+    if (!pixels.encapsulated && pixels.length < out.size())
+        throw Error("pixel data holds " + std::to_string(pixels.length) + " bytes, expected " +
+                        std::to_string(out.size()) + " (" + std::to_string(s.columns) + " x " +
+                        std::to_string(s.rows) + " x " + std::to_string(s.bitsAllocated / 8) + ")",
+                    s.path);
     gdcm::ImageReader reader;
     reader.SetFileName(s.path.c_str());
     bool read = false;
@@ -268,34 +421,37 @@ void readSlicePixels(const Slice& s, ref_ptr<VolumeGrid>& grid, int k, std::vect
     }
     if (!read) throw Error("GDCM cannot read the slice's pixel data", s.path);
     const gdcm::Image& image = reader.GetImage();
-    const std::size_t pixels = std::size_t(s.rows) * std::size_t(s.columns);
-    const std::size_t bytesPer = std::size_t(s.bitsAllocated) / 8;
-    if (image.GetBufferLength() != pixels * bytesPer)
+    if (image.GetBufferLength() != out.size())
         throw Error("pixel data holds " + std::to_string(image.GetBufferLength()) +
-                        " bytes, expected " + std::to_string(pixels * bytesPer) + " (" +
+                        " bytes, expected " + std::to_string(out.size()) + " (" +
                         std::to_string(s.columns) + " x " + std::to_string(s.rows) + " x " +
-                        std::to_string(bytesPer) + ")",
+                        std::to_string(s.bitsAllocated / 8) + ")",
                     s.path);
-    buffer.resize(pixels * bytesPer);
     bool decoded = false;
     try {
-        decoded = image.GetBuffer(buffer.data());
+        decoded = image.GetBuffer(reinterpret_cast<char*>(out.data()));
     } catch (const std::exception& e) {
         throw Error(std::string("GDCM cannot decode the slice's pixel data: ") + e.what(), s.path);
     }
     if (!decoded) throw Error("GDCM cannot decode the slice's pixel data", s.path);
-    const std::size_t base = grid->index(0, 0, k);
+}
+
+// Slice k's stored values, rescaled, into the grid.
+void storeSlice(const Slice& s, std::span<const std::byte> stored, VolumeGrid& grid, int k) {
+    const std::size_t pixels = std::size_t(s.rows) * std::size_t(s.columns);
+    const std::size_t bytesPer = std::size_t(s.bitsAllocated) / 8;
+    const std::size_t base = grid.index(0, 0, k);
     for (std::size_t i = 0; i < pixels; ++i) {
-        double stored;
+        double value;
         if (bytesPer == 1) {
-            stored = s.pixelRepresentation ? double(std::int8_t(buffer[i]))
-                                           : double(std::uint8_t(buffer[i]));
+            const auto b = std::uint8_t(stored[i]);
+            value = s.pixelRepresentation ? double(std::int8_t(b)) : double(b);
         } else {
             std::uint16_t raw;
-            std::memcpy(&raw, buffer.data() + 2 * i, 2);
-            stored = s.pixelRepresentation ? double(std::int16_t(raw)) : double(raw);
+            std::memcpy(&raw, stored.data() + 2 * i, 2);
+            value = s.pixelRepresentation ? double(std::int16_t(raw)) : double(raw);
         }
-        grid->setValue(base + i, stored * s.slope + s.intercept);
+        grid.setValue(base + i, value * s.slope + s.intercept);
     }
 }
 
@@ -326,9 +482,32 @@ ref_ptr<VolumeGrid> readDicomSeries(const std::string& path, std::uint64_t byteL
     const VoxelType type = gridTypeFor(slices);
     checkedGridBytes(first.path, 0, dims, type, spacing, byteLimit);
     ref_ptr<VolumeGrid> grid = VolumeGrid::create(dims, type, spacing, byteLimit);
-    std::vector<char> buffer;
-    for (std::size_t k = 0; k < slices.size(); ++k)
-        readSlicePixels(slices[k], grid, int(k), buffer);
+    // The stored pixels of every slice, decoded by GDCM in the isolated child; the sizes were
+    // checked against the byte limit above (checkedGridBytes: the grid is at least as large).
+    const std::size_t sliceBytes =
+        std::size_t(first.rows) * std::size_t(first.columns) * std::size_t(first.bitsAllocated / 8);
+    const IsolatedOutcome decoded = runIsolated(
+        sliceBytes * slices.size(),
+        [&](std::span<std::byte> shared, std::string& message) {
+            try {
+                for (std::size_t k = 0; k < slices.size(); ++k)
+                    decodeSlicePixels(slices[k], shared.subspan(k * sliceBytes, sliceBytes));
+            } catch (const Error& e) {
+                message = e.what();
+                return false;
+            }
+            return true;
+        },
+        [&](std::span<const std::byte> shared) {
+            for (std::size_t k = 0; k < slices.size(); ++k)
+                storeSlice(slices[k], shared.subspan(k * sliceBytes, sliceBytes), *grid, int(k));
+        });
+    if (!decoded.ok) {
+        // The child's own message names the slice; a child that died says only its signal.
+        if (decoded.message.rfind("stopped by signal", 0) != 0) throw Error(decoded.message);
+        throw Error("GDCM stopped while decoding the series' pixel data: " + decoded.message,
+                    first.path);
+    }
 
     VolumeGeometry geometry;
     geometry.known = first.hasPosition && first.hasOrientation;
