@@ -127,9 +127,6 @@ Viewer::Viewer(ViewerOptions options)
         throw Error("Dear ImGui could not start on this GL context");
 
     recent_.load();
-    browser_.setFolder(std::filesystem::path(options_.scenePath).parent_path().empty()
-                           ? std::filesystem::current_path()
-                           : std::filesystem::path(options_.scenePath).parent_path());
     openFile(options_.scenePath, options_.open); // the same as opening it later
 }
 

@@ -61,6 +61,10 @@ void Viewer::openFile(const std::string& path, const OpenFileOptions& open) {
     lastShown_.reset();
     errorLine_.clear();
     glfwSetWindowTitle(window_->handle(), ("volsg-view " + path).c_str());
+    // The dialog opens next where this file is.
+    const fs::path where = fs::path(path).parent_path();
+    if (browser_.setFolder(where.empty() ? fs::current_path() : where))
+        browserPanel_.typedFollowsFolder = true;
     if (const std::string why = recent_.add(path); !why.empty()) status(why);
     status("opened " + path);
 }
@@ -82,7 +86,7 @@ void Viewer::openRequested() {
         openFile(path, open);
     } catch (const Error& e) {
         // Error's text names the file (and the place in it); the old scene is still shown.
-        errorLine_ = std::string("cannot open: ") + e.what();
+        errorLine_ = "cannot open " + fs::path(path).filename().string() + ": " + e.what();
         status(errorLine_);
     }
 }
@@ -192,7 +196,9 @@ void Viewer::drawOpenDialog() {
         openDialogShown_ = false;
         return;
     }
-    const float formHeight = rawForm_.use ? 7.0f * ImGui::GetFrameHeightWithSpacing() : 0.0f;
+    const float formHeight =
+        (rawForm_.use ? 4.0f * ImGui::GetFrameHeightWithSpacing() : 0.0f) +
+        (dialogError_.empty() ? 0.0f : 2.0f * ImGui::GetTextLineHeightWithSpacing());
     const float listHeight = std::max(80.0f, ImGui::GetContentRegionAvail().y - formHeight -
                                                  3.5f * ImGui::GetFrameHeightWithSpacing());
     const std::string chosen = drawFileBrowserPanel(browser_, browserPanel_, listHeight);
@@ -213,8 +219,11 @@ void Viewer::drawOpenDialog() {
         ImGui::SetNextItemWidth(120.0f);
         ImGui::InputInt("header bytes to skip", &rawForm_.headerSkip);
     }
-    if (!dialogError_.empty())
-        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", dialogError_.c_str());
+    if (!dialogError_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
+        ImGui::TextWrapped("%s", dialogError_.c_str());
+        ImGui::PopStyleColor();
+    }
     if (!chosen.empty()) {
         openFromDialog(chosen);
     } else {
