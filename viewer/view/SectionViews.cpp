@@ -185,8 +185,16 @@ ref_ptr<Camera> SectionViews::camera(int section, double aspect) const {
     const glm::dvec3 extent = grid_->extent();
     const glm::dvec3 up = glm::normalize(linear * upLocal);
     const glm::dvec3 forward = glm::normalize(glm::cross(up, linear * rightLocal));
-    const double upExtent = glm::length(linear * (glm::abs(upLocal) * extent));
-    const double rightExtent = glm::length(linear * (glm::abs(rightLocal) * extent));
+    // The box's extent across the view: its edges projected on the view's up and right (an
+    // oblique volume's slice shows turned, its corners further out).
+    const glm::dvec3 right = glm::normalize(linear * rightLocal);
+    double upExtent = 0.0, rightExtent = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        if (a == axisOf(section)) continue;
+        const glm::dvec3 edge = linear[a] * extent[a];
+        upExtent += std::abs(glm::dot(edge, up));
+        rightExtent += std::abs(glm::dot(edge, right));
+    }
     const double depth = glm::length(linear * extent); // the box's diagonal
     auto camera = OrthographicCamera::create();
     camera->height = float(1.06 * std::max(upExtent, rightExtent / std::max(aspect, 1e-6)));
