@@ -211,7 +211,10 @@ TEST_CASE("volsg-view opens files through the open dialog, drops and the recent 
         script += "screenshot " + (dir / "question.png").string() + "\n";
         script += "confirm cancel\nwait 1\nopen " + b.string() + "\nwait 1\n";
         script += "confirm discard\nwait 1\n";
-        script += "screenshot " + (dir / "first.png").string() + " scene\nquit\n";
+        script += "screenshot " + (dir / "first.png").string() + " scene\n";
+        // Edited again: "save, then open" writes b's scene beside it before a opens.
+        script += "preset opacity alpha step\nopen " + a.string() + "\nwait 1\n";
+        script += "confirm save\nwait 1\nquit\n";
         const int status = run(dir, a, script, log);
         INFO("viewer output: " << log);
         REQUIRE(status == 0);
@@ -221,6 +224,22 @@ TEST_CASE("volsg-view opens files through the open dialog, drops and the recent 
         CHECK(log.find("cannot open missing.nrrd: ") != std::string::npos);
         CHECK(log.find((dir / "missing.nrrd").string()) != std::string::npos);
         CHECK(log.find("opened " + b.string()) != std::string::npos);
+        checkShowsVolume((dir / "first.png").string());
+        CHECK(fs::exists(dir / "sub" / "b.iv"));
+        CHECK(log.find("saved " + (dir / "sub" / "b.iv").string()) <
+              log.rfind("opened " + a.string()));
+    }
+    SUBCASE("the dialog opens a folder as a DICOM series") {
+        fs::copy(fs::path(VOLSG_DATA_DIR) / "derived/headsq_dicom", dir / "headsq_dicom");
+        const int status = run(dir, a,
+                               "wait 1\nkey o ctrl\nwait 1\nclick left dialog:headsq_dicom\n"
+                               "wait 1\nclick left dialog:open\nwait 1\n"
+                               "screenshot " +
+                                   (dir / "first.png").string() + " scene\nquit\n",
+                               log);
+        INFO("viewer output: " << log);
+        REQUIRE(status == 0);
+        CHECK(log.find("opened " + (dir / "headsq_dicom").string()) != std::string::npos);
         checkShowsVolume((dir / "first.png").string());
     }
     SUBCASE("recent files: kept across runs, a corrupt list ignored") {
