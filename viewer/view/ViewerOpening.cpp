@@ -9,12 +9,14 @@
 #include "Viewer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
 
 #include <volsg/context/GlfwWindow.h>
 #include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeSeries.h> // complete for SeriesPanel's ref_ptr
 
@@ -41,6 +43,9 @@ void Viewer::openFile(const std::string& path, const OpenFileOptions& open) {
     ref_ptr<Node> fresh = readSceneForFile(path, open); // throws: the old scene stays
     detachAll();
     root_ = fresh;
+    seekMode_ = false; // input under way was for the old scene
+    drag_ = Drag::None;
+    dragButton_ = -1;
     // The scene's clock and the first-image times count from here (at start-up: from the
     // viewer's start, window included).
     if (framesTotal_ > 0) startTime_ = std::chrono::steady_clock::now();
@@ -160,9 +165,12 @@ void Viewer::openFromDialog(const std::string& path) {
         raw.bigEndian = rawForm_.bigEndian;
         raw.headerSkip = std::uint64_t(std::max(rawForm_.headerSkip, 0));
         if (glm::any(glm::lessThan(raw.dimensions, glm::ivec3(1))) ||
-            !(raw.spacing.x > 0.0 && raw.spacing.y > 0.0 && raw.spacing.z > 0.0)) {
+            glm::any(glm::greaterThan(raw.dimensions, glm::ivec3(limits::maxVolumeDimension))) ||
+            !(raw.spacing.x > 0.0 && raw.spacing.y > 0.0 && raw.spacing.z > 0.0) ||
+            !std::isfinite(raw.spacing.x + raw.spacing.y + raw.spacing.z)) {
             dialogError_ = fs::path(path).filename().string() +
-                           ": give the raw voxels' dimensions (each at least 1) and spacing (> 0)";
+                           ": give the raw voxels' dimensions (each 1 to " +
+                           std::to_string(limits::maxVolumeDimension) + ") and spacing (> 0)";
             return;
         }
         open.raw = raw;
