@@ -31,6 +31,8 @@ const char* usage =
     "  walk:  hold left: up/down walks, left/right turns; middle drag looks up/down\n"
     "  four views: click a section view to move the cursor (and the planes) there, wheel\n"
     "         steps its plane\n"
+    "  files: ctrl+o the open dialog (File menu: open, open recent, save), or drop a file on\n"
+    "         the window; the last 10 opened are in $XDG_CONFIG_HOME/volsg/recent\n"
     "  The scene reloads when its file changes.\n"
     "  FILE: a scene file, a .vsgv, a volume (.nrrd .nhdr .mhd .mha .nii .nii.gz, a DICOM\n"
     "  folder or file, raw with the options below) or a glTF model (.gltf .glb): a data file\n"

@@ -74,7 +74,8 @@ TEST_CASE("saving keeps comments and untouched text, adds the camera, Save As, s
     }
     const std::string viewer = std::string(VOLSG_BINARY_DIR) + "/viewer/volsg-view";
     const std::string command = "cd " + dir.string() + " && " + sanitizerEnvironment() +
-                                "xvfb-run -a -s '-screen 0 1280x800x24' " + viewer + " " +
+                                "XDG_CONFIG_HOME='" + testConfigHome() +
+                                "' xvfb-run -a -s '-screen 0 1280x800x24' " + viewer + " " +
                                 scene.string() + " --size 640x400 --script " +
                                 (dir / "script.txt").string() + " > log.txt 2>&1";
     const int status = std::system(command.c_str());

@@ -155,3 +155,35 @@ TEST_CASE("orientation and preset commands, and their errors") {
     CHECK_THROWS_AS(parseViewerScript("preset all CT bone\n", "s"), Error);
     CHECK_THROWS_AS(parseViewerScript("preset colour\n", "s"), Error);
 }
+
+TEST_CASE("file commands: open, drop, recent, type, the dialog's raw form and confirm") {
+    const auto steps = parseViewerScript("open /d/a.nrrd\ndrop /d/b.iv /d/c.iv\nrecent 3\n"
+                                         "type /d/some folder\ndialog raw 4 5 6 short 1 2 0.5\n"
+                                         "confirm discard\nclick left dialog:b.iv\n",
+                                         "f.txt");
+    using K = ScriptStep::Kind;
+    REQUIRE(steps.size() == 9); // the click is three steps
+    CHECK(steps[0].kind == K::Open);
+    CHECK(steps[0].text == "/d/a.nrrd");
+    CHECK(steps[1].kind == K::Drop);
+    CHECK(steps[1].files == std::vector<std::string>{"/d/b.iv", "/d/c.iv"});
+    CHECK(steps[2].kind == K::Recent);
+    CHECK(steps[2].frames == 3);
+    CHECK(steps[3].kind == K::Type);
+    CHECK(steps[3].text == "/d/some folder");
+    CHECK(steps[4].kind == K::DialogRaw);
+    CHECK(steps[4].voxel == glm::ivec3(4, 5, 6));
+    CHECK(steps[4].text == "short");
+    CHECK(steps[4].spacing == glm::dvec3(1, 2, 0.5));
+    CHECK(steps[5].kind == K::Confirm);
+    CHECK(steps[5].text == "discard");
+    CHECK(steps[6].point.kind == ScriptPoint::Kind::Dialog);
+    CHECK(steps[6].point.canvas == "b.iv");
+    for (const char* bad :
+         {"open\n", "open a b\n", "drop\n", "recent 0\n", "recent x\n", "dialog raw 1 2 3 int\n",
+          "dialog raw 1 2 3 uchar 1 0 1\n", "dialog raw 1 2\n", "dialog cooked 1 2 3 uchar\n",
+          "confirm maybe\n", "move dialog:\n"}) {
+        CAPTURE(bad);
+        CHECK_THROWS_AS(parseViewerScript(bad, "f.txt"), Error);
+    }
+}

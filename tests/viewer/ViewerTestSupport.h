@@ -54,15 +54,23 @@ inline int changedPixels(const Image& a, const Image& b, float threshold, int x0
     return count;
 }
 
+/// The viewer's settings folder for tests (XDG_CONFIG_HOME): the recent files of test runs
+/// never reach the user's own.
+inline std::string testConfigHome() {
+    return std::string(VOLSG_BINARY_DIR) + "/tests/viewer-config";
+}
+
 /// Runs volsg-view (of this build) on `scene` with `arguments` and the script `script` under
-/// xvfb-run; returns the exit status, and the viewer's output in `log`.
+/// xvfb-run; returns the exit status, and the viewer's output in `log`. `configHome` is its
+/// XDG_CONFIG_HOME (default: testConfigHome()).
 inline int runViewerScript(const std::string& scene, const std::string& arguments,
-                           const std::string& script, std::string& log) {
+                           const std::string& script, std::string& log,
+                           const std::string& configHome = testConfigHome()) {
     const std::string viewer = std::string(VOLSG_BINARY_DIR) + "/viewer/volsg-view";
     const std::string logFile = script + ".log";
-    const std::string command = sanitizerEnvironment() + "xvfb-run -a -s '-screen 0 1280x800x24' " +
-                                viewer + " " + scene + " " + arguments + " --script " + script +
-                                " > " + logFile + " 2>&1";
+    const std::string command = sanitizerEnvironment() + "XDG_CONFIG_HOME='" + configHome +
+                                "' xvfb-run -a -s '-screen 0 1280x800x24' " + viewer + " " + scene +
+                                " " + arguments + " --script " + script + " > " + logFile + " 2>&1";
     const int status = std::system(command.c_str());
     std::ifstream in(logFile);
     log.assign(std::istreambuf_iterator<char>(in), {});

@@ -12,18 +12,34 @@
 
 namespace volsg {
 
-/// How the volume's local axes run in patient coordinates: local axis i runs along RAS axis i,
-/// reversed where signs[i] is -1. All +1 (the default) is the viewer's convention for data
-/// without geometry: x from the patient's left to right, y posterior to anterior, z inferior
-/// to superior. A file stored head first along z (VTK's headsq) needs z reversed.
+/// How the volume's local axes run in patient coordinates (RAS). `fromFile` is what the data
+/// file says (its columns: the RAS directions of the local x, y and z axes; the identity for a
+/// file without geometry, the viewer's convention: x from the patient's left to right, y
+/// posterior to anterior, z inferior to superior); `signs` reverses local axes on top of it
+/// (the Scene panel's boxes, script `axes`: a file stored head first along z without saying
+/// so, like VTK's headsq, needs z reversed).
 struct PatientAxes {
     glm::dvec3 signs{1.0};
-    /// A RAS direction in the volume's local coordinates (and back: the map is its own
-    /// inverse).
-    glm::dvec3 toLocal(const glm::dvec3& ras) const { return ras * signs; }
-    /// The anatomical letter of the direction +axis (or -axis) of the volume: R/L, A/P, S/I.
+    glm::dmat3 fromFile{1.0};
+
+    /// From a file's geometry: the LPS directions of its index axes (VolumeGeometry).
+    static glm::dmat3 fromLpsDirections(const glm::dmat3& lps);
+    /// Local axes to RAS: fromFile with the reversals.
+    glm::dmat3 localToRas() const;
+    /// A RAS direction in the volume's local coordinates.
+    glm::dvec3 toLocal(const glm::dvec3& ras) const;
+    /// A local direction in RAS.
+    glm::dvec3 toRas(const glm::dvec3& local) const { return localToRas() * local; }
+    /// The anatomical letter of the direction +axis (or -axis) of the volume: R/L, A/P, S/I
+    /// (of the largest RAS component, for an oblique axis).
     char letter(int axis, bool positive) const;
+    /// The local axis nearest each RAS axis (R, A, S): a permutation, so an oblique volume's
+    /// sagittal, coronal and axial sections each slice along a different local axis.
+    glm::ivec3 localAxisOfRas() const;
 };
+
+/// The anatomical letter of a RAS direction: of its largest component (R L A P S I).
+char patientLetter(const glm::dvec3& ras);
 
 /// A camera direction in patient coordinates: where it looks and which way is up.
 struct ViewDirection {

@@ -111,7 +111,7 @@ bool SectionViews::attach(Node& root) {
         for (const TransferFunction* tf : find.transferFunctions)
             graph->addChild(ref_ptr<Node>(const_cast<TransferFunction*>(tf)));
         auto slice = OrthoSlice::create();
-        slice->axis = s;
+        slice->axis = axisOf(s);
         slice->alphaUse = OrthoSlice::ALPHA_OPAQUE; // a section shows every voxel's colour
         slices_[std::size_t(s)] = slice.get();
         graph->addChild(slice);
@@ -125,8 +125,18 @@ bool SectionViews::attach(Node& root) {
         cursor_[axis] = std::clamp(slice->sliceNumber(), 0, grid_->dimensions()[axis] - 1);
     }
     for (int s = 0; s < 3; ++s)
-        slices_[std::size_t(s)]->sliceNumber = cursor_[s];
+        slices_[std::size_t(s)]->sliceNumber = cursor_[axisOf(s)];
     return true;
+}
+
+void SectionViews::setPatientAxes(const PatientAxes& axes) {
+    patientAxes_ = axes;
+    axisOf_ = axes.localAxisOfRas();
+    for (int s = 0; s < 3; ++s)
+        if (OrthoSlice* slice = slices_[std::size_t(s)]) {
+            if (slice->axis() != axisOf(s)) slice->axis = axisOf(s);
+            if (slice->sliceNumber() != cursor_[axisOf(s)]) slice->sliceNumber = cursor_[axisOf(s)];
+        }
 }
 
 bool SectionViews::update(Node& root) {
@@ -157,15 +167,34 @@ ref_ptr<Camera> SectionViews::camera(int section, double aspect) const {
     // fixes; the camera looks along up x right, which is the patient's forward unless the
     // volume's axes are a mirror image of RAS (then it looks from the other side of the
     // plane, which shows the same section the right way round).
+    // An oblique volume's slice is a plane of its own axes: the patient's up and right are
+    // projected into it (along the slicing axis), the nearest it shows.
     const ViewDirection d = sectionViewDirection(section, flipped_);
-    const glm::dvec3 upLocal = patientAxes_.toLocal(d.up);
-    const glm::dvec3 rightLocal = patientAxes_.toLocal(glm::cross(d.forward, d.up));
+    glm::dvec3 upLocal = patientAxes_.toLocal(d.up);
+    glm::dvec3 rightLocal = patientAxes_.toLocal(glm::cross(d.forward, d.up));
+    upLocal[axisOf(section)] = 0.0;
+    rightLocal[axisOf(section)] = 0.0;
+    if (glm::length(upLocal) < 1e-9 || glm::length(rightLocal) < 1e-9) { // degenerate axes
+        upLocal = rightLocal = glm::dvec3(0.0);
+        upLocal[(axisOf(section) + 2) % 3] = 1.0;
+        rightLocal[(axisOf(section) + 1) % 3] = 1.0;
+    }
+    upLocal = glm::normalize(upLocal);
+    rightLocal = glm::normalize(rightLocal);
     const glm::dmat3 linear(model_);
     const glm::dvec3 extent = grid_->extent();
     const glm::dvec3 up = glm::normalize(linear * upLocal);
     const glm::dvec3 forward = glm::normalize(glm::cross(up, linear * rightLocal));
-    const double upExtent = glm::length(linear * (upLocal * extent));
-    const double rightExtent = glm::length(linear * (rightLocal * extent));
+    // The box's extent across the view: its edges projected on the view's up and right (an
+    // oblique volume's slice shows turned, its corners further out).
+    const glm::dvec3 right = glm::normalize(linear * rightLocal);
+    double upExtent = 0.0, rightExtent = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        if (a == axisOf(section)) continue;
+        const glm::dvec3 edge = linear[a] * extent[a];
+        upExtent += std::abs(glm::dot(edge, up));
+        rightExtent += std::abs(glm::dot(edge, right));
+    }
     const double depth = glm::length(linear * extent); // the box's diagonal
     auto camera = OrthographicCamera::create();
     camera->height = float(1.06 * std::max(upExtent, rightExtent / std::max(aspect, 1e-6)));
@@ -199,7 +228,7 @@ std::optional<glm::ivec3> SectionViews::voxelAtPixel(int section, const glm::dve
     // The ray runs along the section's axis: in local coordinates only that coordinate varies,
     // and the plane fixes it at the slice's voxel centre.
     glm::dvec3 local(glm::inverse(model_) * (world / world.w));
-    local[section] = grid_->voxelCenter(cursor_.x, cursor_.y, cursor_.z)[section];
+    local[axisOf(section)] = grid_->voxelCenter(cursor_.x, cursor_.y, cursor_.z)[axisOf(section)];
     return RegionHistogram::voxelAt(*grid_, local);
 }
 
@@ -215,8 +244,8 @@ void SectionViews::setCursor(const glm::ivec3& voxel) {
     if (!valid()) return;
     cursor_ = glm::clamp(voxel, glm::ivec3(0), grid_->dimensions() - 1);
     for (int s = 0; s < 3; ++s)
-        if (slices_[std::size_t(s)]->sliceNumber() != cursor_[s])
-            slices_[std::size_t(s)]->sliceNumber = cursor_[s];
+        if (slices_[std::size_t(s)]->sliceNumber() != cursor_[axisOf(s)])
+            slices_[std::size_t(s)]->sliceNumber = cursor_[axisOf(s)];
     for (const ref_ptr<OrthoSlice>& slice : sceneSlices_) {
         const int axis = std::clamp(slice->axis(), 0, 2);
         if (slice->sliceNumber() != cursor_[axis]) slice->sliceNumber = cursor_[axis];

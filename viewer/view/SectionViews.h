@@ -12,6 +12,7 @@
 // per node). The cursor is a voxel of that volume: setting it moves the three section planes
 // (their sliceNumbers) and every OrthoSlice of the scene on that volume through it.
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -33,7 +34,8 @@ class TransferFunction;
 
 class SectionViews {
 public:
-    /// The volume axis each view looks along (OrthoSlice::axis).
+    /// The anatomical planes; each view slices along the volume axis nearest its normal
+    /// (axisOf: the same axis for a volume stored in the viewer's convention).
     enum Section { Sagittal = 0, Coronal = 1, Axial = 2 };
     static const char* name(int section); ///< "sagittal", "coronal", "axial"
     /// The section named `name`, or -1.
@@ -66,7 +68,11 @@ public:
     bool flipped() const { return flipped_; }
     /// How the volume's axes run in patient coordinates (PatientOrientation.h); by default the
     /// viewer's convention (x to the patient's right, y anterior, z superior).
-    void setPatientAxes(const PatientAxes& axes) { patientAxes_ = axes; }
+    /// The sections then slice along the local axes nearest their patient normals.
+    void setPatientAxes(const PatientAxes& axes);
+    /// The volume axis a section slices along (its OrthoSlice::axis, the cursor component it
+    /// shows).
+    int axisOf(int section) const { return axisOf_[std::clamp(section, 0, 2)]; }
     const PatientAxes& patientAxes() const { return patientAxes_; }
     /// The orthographic camera of a section view with this aspect (width / height), in world
     /// coordinates: the volume's box fills the view with a small margin.
@@ -101,6 +107,7 @@ private:
     glm::ivec3 cursor_{0};
     bool flipped_ = false;
     PatientAxes patientAxes_;
+    glm::ivec3 axisOf_{0, 1, 2};
 };
 
 } // namespace volsg

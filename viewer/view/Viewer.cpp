@@ -88,11 +88,9 @@ Viewer::Viewer(ViewerOptions options)
     : options_(std::move(options)), startTime_(std::chrono::steady_clock::now()) {
     if (!options_.scriptPath.empty())
         script_ = parseViewerScript(readText(options_.scriptPath), options_.scriptPath);
-    root_ = readSceneForFile(options_.scenePath, options_.open);
-    // A scene file's text is kept for saving in place; a data file's scene is saved beside it.
-    if (scenePathForSaving(options_.scenePath, options_.open) == options_.scenePath)
-        takeSceneText();
-    sceneTime_ = std::filesystem::last_write_time(options_.scenePath);
+    // The file is told apart before a window opens, so a file volsg cannot open is one line
+    // on the terminal and no window.
+    fileKindOf(options_.scenePath, options_.open);
 
     GlfwWindowOptions windowOptions;
     windowOptions.width = options_.width;
@@ -115,6 +113,9 @@ Viewer::Viewer(ViewerOptions options)
     glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
         if (action == GLFW_PRESS || action == GLFW_REPEAT) viewerOf(win)->onKey(key, mods);
     });
+    glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
+        viewerOf(win)->onDrop(std::vector<std::string>(paths, paths + std::max(count, 0)));
+    });
 
     // ImGui chains to the callbacks above (installed first).
     IMGUI_CHECKVERSION();
@@ -125,10 +126,8 @@ Viewer::Viewer(ViewerOptions options)
     if (!ImGui_ImplGlfw_InitForOpenGL(w, true) || !ImGui_ImplOpenGL3_Init("#version 330 core"))
         throw Error("Dear ImGui could not start on this GL context");
 
-    showMessageFrame(loadingMessage());
-    loadScene();
-    setupCamera();
-    setNavigationMode(options_.navigation);
+    recent_.load();
+    openFile(options_.scenePath, options_.open); // the same as opening it later
 }
 
 Viewer::~Viewer() {
@@ -148,6 +147,7 @@ void Viewer::loadScene() {
     refineStage_ = 0; // a new scene: a coarse first image, then the full one
     manipulators_.clear();
     history_.clear();
+    savedChangeCount_ = history_.changeCount();
     activeDrag_.end();
     select(nullptr);
     tfEditor_.setScene(root_.get());
@@ -155,6 +155,7 @@ void Viewer::loadScene() {
     const auto volumes = findAll(*root_, Volume::classType());
     planeEditor_.setVolume(volumes.empty() ? nullptr : static_cast<Volume*>(volumes.front()));
     attachSections();
+    patientAxesFromData();
     seriesPanel_.attach(root_.get());
 }
 
@@ -246,7 +247,7 @@ void Viewer::handleSceneEvents() {
             if (const int view = viewAt(e.position); view > kView3D) {
                 // Over a section view: the wheel steps its plane through the volume.
                 glm::ivec3 voxel = sections_.cursor();
-                voxel[view - 1] += e.scroll > 0.0 ? 1 : -1;
+                voxel[sections_.axisOf(view - 1)] += e.scroll > 0.0 ? 1 : -1;
                 setCursor(voxel);
                 break;
             }
@@ -285,7 +286,10 @@ void Viewer::handleSceneEvents() {
                     navigation_->goHome();
                     break;
                 case GLFW_KEY_O:
-                    navigation_->toggleProjection();
+                    if (ctrl)
+                        showOpenDialog();
+                    else
+                        navigation_->toggleProjection();
                     break;
                 case GLFW_KEY_A:
                     // off, multisampling, 2x2 supersampling, off, ...
@@ -561,6 +565,7 @@ void Viewer::followSceneEdits() {
     if (!valid || &sections_.data() != before) {
         cursorSet_ = false;
         region_.reset();
+        patientAxesFromData(); // other data: its own geometry
     }
 }
 
@@ -762,6 +767,13 @@ glm::dvec2 Viewer::resolvePoint(const ScriptPoint& p) const {
         return {r.x + (clip.x / clip.w + 1.0) * 0.5 * r.width,
                 r.y + (1.0 - clip.y / clip.w) * 0.5 * r.height};
     }
+    case ScriptPoint::Kind::Dialog: {
+        const auto it = browserPanel_.places.find(p.canvas);
+        if (!openDialogShown_ || it == browserPanel_.places.end())
+            throw Error("'" + p.canvas + "' is not in the open dialog (open it first: key o ctrl)");
+        const auto [lo, hi] = it->second;
+        return {0.5 * double(lo.x + hi.x), 0.5 * double(lo.y + hi.y)};
+    }
     case ScriptPoint::Kind::View: {
         if (p.canvas != "3d" && options_.layout != ViewLayout::Four)
             throw Error("the " + p.canvas + " view shows only in the four-view layout");
@@ -812,6 +824,34 @@ void Viewer::runScriptStep() {
             break;
         case K::Key:
             onKey(keyCodeOf(s.text), s.mods);
+            scriptKeys_.emplace_back(keyCodeOf(s.text), s.mods); // and to the UI's fields
+            break;
+        case K::Open:
+            requestOpenOrAskLayout(s.text);
+            break;
+        case K::Drop:
+            onDrop(s.files);
+            break;
+        case K::Recent:
+            openRecent(s.frames - 1);
+            break;
+        case K::Type:
+            scriptTyped_ += s.text;
+            break;
+        case K::DialogRaw: {
+            static const char* types[4] = {"uchar", "ushort", "short", "float"};
+            rawForm_.use = true;
+            for (int a = 0; a < 3; ++a) {
+                rawForm_.dimensions[a] = s.voxel[a];
+                rawForm_.spacing[a] = float(s.spacing[a]);
+            }
+            for (int t = 0; t < 4; ++t)
+                if (s.text == types[t]) rawForm_.type = t;
+            break;
+        }
+        case K::Confirm:
+            if (!pendingOpen_) throw Error("no question is waiting for an answer");
+            answerUnsavedQuestion(s.text == "cancel" ? 0 : s.text == "save" ? 1 : 2);
             break;
         case K::Select: {
             Node* node = findByName(*root_, s.text);
@@ -1019,6 +1059,7 @@ void Viewer::frame() {
     const bool scripted = scriptNext_ < script_.size() || scriptWait_ > 0;
     const ScriptStep* step = scripted && scriptWait_ == 0 ? &script_[scriptNext_] : nullptr;
     runScriptStep();
+    openRequested();
     checkReload();
 
     // The mouse state of this frame, from the events in order.
@@ -1042,9 +1083,38 @@ void Viewer::frame() {
     io.MousePos = ImVec2(float(mouse_.x), float(mouse_.y)); // ours: GLFW's or the script's
     for (int b = 0; b < 3; ++b)
         io.MouseDown[b] = buttons_[b] || justPressed_[b];
+    if (!script_.empty()) {
+        // The script's keys and text reach the UI's fields as GLFW's would: a key is down for
+        // one frame. The UI's clock steps 1/30 s a frame, as fly and walk do, so a scripted
+        // double-click is one on any machine.
+        io.DeltaTime = 1.0f / 30.0f;
+        for (const int key : scriptKeysDown_)
+            io.KeysDown[key] = false;
+        if (!scriptKeysDown_.empty()) io.KeyCtrl = io.KeyShift = io.KeyAlt = false;
+        scriptKeysDown_.clear();
+        for (const auto& [key, mods] : scriptKeys_)
+            if (key >= 0 && key < int(IM_ARRAYSIZE(io.KeysDown))) {
+                io.KeysDown[key] = true;
+                io.KeyCtrl = (mods & GLFW_MOD_CONTROL) != 0;
+                io.KeyShift = (mods & GLFW_MOD_SHIFT) != 0;
+                io.KeyAlt = (mods & GLFW_MOD_ALT) != 0;
+                scriptKeysDown_.push_back(key);
+            }
+        scriptKeys_.clear();
+        for (const char c : scriptTyped_)
+            io.AddInputCharacter(static_cast<unsigned char>(c));
+        scriptTyped_.clear();
+    }
     ImGui::NewFrame();
     handleSceneEvents();
     events_.clear();
+    if (!dropped_.empty()) { // the first dropped file opens, as the dialog would open it
+        const std::vector<std::string> dropped = std::move(dropped_);
+        dropped_.clear();
+        if (dropped.size() > 1)
+            status("opening the first of " + std::to_string(dropped.size()) + " dropped files");
+        requestOpenOrAskLayout(dropped.front());
+    }
     seriesPanel_.update(glfwGetTime());
     followSceneEdits();
     // Engines, field connections and animated nodes (Rotor, Blinker, ...) run on the viewer's
@@ -1054,6 +1124,8 @@ void Viewer::frame() {
     if (engines_.evaluate(*root_, sceneSeconds_) > 0) sceneChanges_ = true;
     tfPanel_.deferHistogram = refineStage_ == 0; // the first image before the histogram
     if (options_.panels) drawPanels();
+    drawOpenDialog();
+    drawUnsavedQuestion();
     progressText_ = refineStage_ == 0 ? "first image at a quarter of the resolution: refining..."
                                       : std::string();
     drawViewOverlays();

@@ -16,11 +16,13 @@
 #include <volsg/editors/ActiveObjectDrag.h>
 #include <volsg/editors/EditHistory.h>
 #include <volsg/editors/FieldPanelModel.h>
+#include <volsg/editors/FileBrowser.h>
 #include <volsg/editors/MaterialEditor.h>
 #include <volsg/editors/PlaneOpacityEditor.h>
 #include <volsg/editors/RegionHistogram.h>
 #include <volsg/editors/TransferFunctionEditor.h>
 #include <volsg/editors/panels/FieldPanel.h>
+#include <volsg/editors/panels/FileBrowserPanel.h>
 #include <volsg/editors/panels/RegionHistogramPanel.h>
 #include <volsg/editors/panels/TransferFunctionPanel.h>
 #include <volsg/engines/Evaluator.h>
@@ -37,6 +39,7 @@
 
 #include "InteractiveQuality.h"
 #include "PatientOrientation.h"
+#include "RecentFiles.h"
 #include "SceneTextSave.h"
 #include "SectionViews.h"
 #include "SeriesPanel.h"
@@ -84,6 +87,9 @@ public:
     void onMouseButton(int button, bool pressed, int mods);
     void onScroll(double dy);
     void onKey(int key, int mods);
+    /// Files dropped on the window (GLFW's drop callback, or the script's `drop`): the first
+    /// opens as the open dialog would open it.
+    void onDrop(const std::vector<std::string>& paths);
 
 private:
     enum class Drag {
@@ -114,6 +120,31 @@ private:
         double scroll = 0.0;
     };
 
+    /// Opening a file, from the command line, the open dialog, a drop, the recent files or the
+    /// script: reads it (SceneForFile.h), and only when that worked replaces the scene, as a
+    /// fresh start of the viewer on it would (camera, panels, history, cursor, patient axes
+    /// from the file's geometry), and puts it first in the recent files. Throws Error (naming
+    /// the file) and keeps the old scene when the file cannot be read.
+    void openFile(const std::string& path, const OpenFileOptions& open);
+    /// openFile for the UI: a scene with unsaved edits asks first (save, discard or cancel);
+    /// a failure is one status line naming the file.
+    void requestOpen(const std::string& path, const OpenFileOptions& open);
+    /// Opens what requestOpen asked for (at the start of a frame).
+    void openRequested();
+    /// A raw file (no layout in its name) opens through the dialog's layout form.
+    void requestOpenOrAskLayout(const std::string& path);
+    /// Edits since the scene was opened or saved.
+    bool sceneEdited() const { return history_.changeCount() != savedChangeCount_; }
+    void showOpenDialog(const std::string& selectPath = {});
+    void openFromDialog(const std::string& path);
+    void drawOpenDialog();
+    void drawUnsavedQuestion();
+    void answerUnsavedQuestion(int answer); ///< 0 cancel, 1 save then open, 2 discard
+    void drawMenuBar();
+    void openRecent(int index); ///< index into recent_.entries()
+    /// The patient axes from the first volume's file geometry (the convention without one),
+    /// keeping the user's reversals.
+    void patientAxesFromData();
     void loadScene();
     /// One frame with `message` in the middle of the window (before the scene can be drawn).
     void showMessageFrame(const std::string& message);
@@ -147,7 +178,7 @@ private:
         std::vector<float> camera; ///< the 3D camera's fields
         glm::ivec3 cursor{0};
         bool cursorShown = false, flipped = false;
-        glm::dvec3 patientSigns{1.0};
+        glm::dmat3 patientAxes{1.0};
         int antialias = 0, stereo = 0;
         double eyeSeparation = 0.0;
         glm::vec3 background{0.0f};
@@ -273,7 +304,7 @@ private:
     /// (with the volumes' interactive planes), the next one in full.
     static constexpr double kFirstImageResolution = 0.25;
     int refineStage_ = 0; ///< frames since the scene was loaded, up to 2
-    std::chrono::steady_clock::time_point startTime_;
+    std::chrono::steady_clock::time_point startTime_; ///< of the viewer, then of the last open
     double sceneSeconds_ = 0.0; ///< the scene time of this frame (engines_, on the viewer's clock)
     bool sceneChanges_ = false; ///< engines or animated nodes have changed a field
     PatientAxes patientAxes_;   ///< how the first volume's axes run in patient coordinates
@@ -285,6 +316,30 @@ private:
     std::string revealPanel_;
     std::optional<SceneTextSnapshot> sceneText_;
     char saveAsPath_[512] = "";
+
+    // Opening files (ViewerOpening.cpp).
+    RecentFiles recent_{RecentFiles::defaultPath()};
+    FileBrowser browser_{openableFileSuffixes()};
+    FileBrowserPanelState browserPanel_;
+    bool openDialogRequested_ = false, openDialogShown_ = false;
+    std::string dialogError_;
+    struct RawForm {
+        bool use = false; ///< open the file as raw voxels with this layout
+        int dimensions[3] = {0, 0, 0};
+        int type = 0; ///< VoxelType
+        float spacing[3] = {1.0f, 1.0f, 1.0f};
+        bool bigEndian = false;
+        int headerSkip = 0;
+    } rawForm_;
+    std::optional<std::pair<std::string, OpenFileOptions>> pendingOpen_; ///< awaiting an answer
+    std::optional<std::pair<std::string, OpenFileOptions>> openNext_;    ///< at the next frame
+    bool unsavedQuestionRequested_ = false;
+    std::uint64_t savedChangeCount_ = 0;
+    std::vector<std::string> dropped_;
+    std::vector<std::pair<int, int>> scriptKeys_; ///< keys (and mods) the script pressed
+    std::vector<int> scriptKeysDown_;             ///< released in ImGui on the next frame
+    std::string scriptTyped_;                     ///< characters the script typed
+    std::string errorLine_; ///< a failed open, over the 3D view until the next open
 };
 
 } // namespace volsg

@@ -28,14 +28,6 @@ namespace volsg {
 
 namespace {
 
-/// The anatomical letter of a direction in patient coordinates (RAS): its largest component.
-char patientLetter(const glm::dvec3& d) {
-    const glm::dvec3 a = glm::abs(d);
-    const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
-    static const char plus[3] = {'R', 'A', 'S'}, minus[3] = {'L', 'P', 'I'};
-    return d[axis] >= 0.0 ? plus[axis] : minus[axis];
-}
-
 void drawLetter(ImDrawList* draw, ImVec2 at, char letter, ImU32 colour) {
     const char text[2] = {letter, '\0'};
     const ImVec2 size = ImGui::CalcTextSize(text);
@@ -130,7 +122,7 @@ void Viewer::drawViewOverlays() {
             draw->AddLine(ImVec2(float(r.x), y), ImVec2(float(r.x + r.width), y), cross);
             draw->AddLine(ImVec2(x, float(r.y)), ImVec2(x, float(r.y + r.height)), cross);
             const std::string text = std::string(SectionViews::name(s)) + "  slice " +
-                                     std::to_string(sections_.cursor()[s]) +
+                                     std::to_string(sections_.cursor()[sections_.axisOf(s)]) +
                                      (sections_.flipped() ? "  (flipped)" : "");
             draw->AddText(ImVec2(float(r.x + 6), float(r.y + r.height - 20)), label, text.c_str());
             // The patient's directions at the view's edges (radiological: L on the right).
@@ -166,6 +158,14 @@ void Viewer::drawViewOverlays() {
         mode += std::string("  stereo ") + stereoModeName(options_.stereo.mode);
     draw->AddText(ImVec2(float(r.x) + float(r.width) * 0.5f - 60.0f, float(r.y + r.height - 20)),
                   label, mode.c_str());
+    if (!errorLine_.empty()) { // a file that did not open: one line over the view
+        const ImVec2 at(float(r.x + 8), float(r.y + 8));
+        const ImVec2 size = ImGui::CalcTextSize(errorLine_.c_str());
+        draw->AddRectFilled({at.x - 4.0f, at.y - 3.0f},
+                            {at.x + size.x + 4.0f, at.y + size.y + 3.0f}, IM_COL32(90, 0, 0, 200),
+                            3.0f);
+        draw->AddText(at, IM_COL32(255, 220, 210, 255), errorLine_.c_str());
+    }
     if (!progressText_.empty()) { // loading or refining: said in the view itself
         const ImVec2 size = ImGui::CalcTextSize(progressText_.c_str());
         const ImVec2 at(float(r.x) + 0.5f * (float(r.width) - size.x), float(r.y + 12));

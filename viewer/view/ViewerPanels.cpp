@@ -77,7 +77,8 @@ void Viewer::drawPanels() {
     ImGui::Begin("##panels", nullptr,
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+                     ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_MenuBar);
+    drawMenuBar();
     if (panelSection("Scene", showScene_, nullptr)) drawScenePanel();
     if (panelSection("Transfer function", showTf_, "tf")) {
         drawTransferFunctionPanel(tfEditor_, tfPanel_);
@@ -181,6 +182,10 @@ void Viewer::drawOrientationControls() {
         }
     }
     if (changed) setPatientAxes(axes);
+    // Where each volume axis points in the patient (from the file's geometry, if it has one).
+    ImGui::Text("volume axes +x %c  +y %c  +z %c%s", patientAxes_.letter(0, true),
+                patientAxes_.letter(1, true), patientAxes_.letter(2, true),
+                patientAxes_.fromFile == glm::dmat3(1.0) ? "" : "  (from the file)");
 }
 
 void Viewer::drawViewControls() {

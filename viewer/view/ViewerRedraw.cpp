@@ -44,7 +44,7 @@ bool Viewer::ViewSignature::operator==(const ViewSignature& o) const {
     return !alwaysDraw && !o.alwaysDraw && newestNode == o.newestNode && nodes == o.nodes &&
            window == o.window && sameRects(layout, o.layout) && camera == o.camera &&
            cursor == o.cursor && cursorShown == o.cursorShown && flipped == o.flipped &&
-           patientSigns == o.patientSigns && antialias == o.antialias && stereo == o.stereo &&
+           patientAxes == o.patientAxes && antialias == o.antialias && stereo == o.stereo &&
            eyeSeparation == o.eyeSeparation && background == o.background;
 }
 
@@ -76,7 +76,7 @@ Viewer::ViewSignature Viewer::viewSignature() const {
     s.cursor = sections_.valid() ? sections_.cursor() : glm::ivec3(0);
     s.cursorShown = cursorSet_;
     s.flipped = sections_.flipped();
-    s.patientSigns = patientAxes_.signs;
+    s.patientAxes = patientAxes_.localToRas();
     s.antialias = int(options_.antialias);
     s.stereo = int(options_.stereo.mode);
     s.eyeSeparation = options_.stereo.separationFraction;

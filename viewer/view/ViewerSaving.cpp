@@ -115,6 +115,7 @@ void Viewer::saveScene(const std::string& path) {
             glfwSetWindowTitle(window_->handle(), ("volsg-view " + path).c_str());
         }
         takeSceneText();
+        savedChangeCount_ = history_.changeCount(); // nothing unsaved now
     } catch (const Error& e) {
         status(std::string("saving failed: ") + e.what());
         exitStatus_ = 1;

@@ -100,8 +100,12 @@ struct LineReader {
                 p.canvas != "sagittal")
                 fail("unknown view '" + p.canvas + "' (3d, axial, coronal, sagittal)");
             p.value = {v[0], v[1], 0.0};
+        } else if (place == "dialog") {
+            p.kind = ScriptPoint::Kind::Dialog;
+            p.canvas = rest;
+            if (rest.empty()) fail("expected dialog:NAME, got '" + w + "'");
         } else {
-            fail("unknown place '" + place + "' (world, tf, planeOpacity, view)");
+            fail("unknown place '" + place + "' (world, tf, planeOpacity, view, dialog)");
         }
         return p;
     }
@@ -332,6 +336,51 @@ std::vector<ScriptStep> parseViewerScript(const std::string& text, const std::st
             steps.push_back(s);
         } else if (command == "play" || command == "pause") {
             s.kind = command == "play" ? K::SeriesPlay : K::SeriesPause;
+            r.end();
+            steps.push_back(s);
+        } else if (command == "open") {
+            s.kind = K::Open;
+            s.text = r.word("a file");
+            r.end();
+            steps.push_back(s);
+        } else if (command == "drop") {
+            s.kind = K::Drop;
+            s.files.push_back(r.word("a file"));
+            while (r.more())
+                s.files.push_back(r.word("a file"));
+            steps.push_back(s);
+        } else if (command == "recent") {
+            s.kind = K::Recent;
+            s.frames = r.count("a recent-file number");
+            if (s.frames < 1) r.fail("recent files are numbered from 1");
+            r.end();
+            steps.push_back(s);
+        } else if (command == "type") {
+            s.kind = K::Type;
+            s.text = r.word("text");
+            while (r.more())
+                s.text += " " + r.word("text");
+            steps.push_back(s);
+        } else if (command == "dialog") {
+            if (r.word("raw") != "raw") r.fail("dialog takes 'raw X Y Z TYPE [SX SY SZ]'");
+            s.kind = K::DialogRaw;
+            s.voxel = {r.count("X"), r.count("Y"), r.count("Z")};
+            s.text = r.word("a voxel type");
+            if (s.text != "uchar" && s.text != "ushort" && s.text != "short" && s.text != "float")
+                r.fail("voxel types are uchar, ushort, short, float");
+            if (r.more())
+                for (int a = 0; a < 3; ++a) {
+                    s.spacing[a] = r.number("a spacing");
+                    if (!(s.spacing[a] > 0.0) || !std::isfinite(s.spacing[a]))
+                        r.fail("a spacing must be > 0");
+                }
+            r.end();
+            steps.push_back(s);
+        } else if (command == "confirm") {
+            s.kind = K::Confirm;
+            s.text = r.word("save, discard or cancel");
+            if (s.text != "save" && s.text != "discard" && s.text != "cancel")
+                r.fail("confirm takes save, discard or cancel");
             r.end();
             steps.push_back(s);
         } else if (command == "quit") {

@@ -33,13 +33,25 @@
 //   save FILE                       the edited scene (docs/SCENE-FORMAT.md)
 //   step N                          show step N of the first VolumeSeries (pauses)
 //   play | pause                    play the series on / pause it
+//   open FILE                       open a file as the File menu does (a scene with unsaved
+//                                   edits asks first; raw voxels: the dialog asks their layout)
+//   drop FILE...                    files dropped on the window (the first one opens)
+//   recent N                        File > Open recent, entry N (1 the newest)
+//   type TEXT                       characters typed into the focused text field (the rest of
+//                                   the line, spaces kept as one)
+//   dialog raw X Y Z TYPE [SX SY SZ]   the open dialog's raw-voxels form (TYPE: uchar ushort
+//                                   short float)
+//   confirm save|discard|cancel     answers "unsaved edits" before another file opens
 //   quit
 //
 // A point X Y is window pixels (origin top-left), or one word naming a place that is resolved
 // when the step runs: `tf:U,V` / `planeOpacity:U,V` (U, V in [0, 1] across a panel's curve
 // canvas, V up), `world:X,Y,Z` (where a world point shows in the 3D view) or `view:NAME:U,V`
 // (U, V in [0, 1] across a view of the four-view layout, V up; NAME: 3d axial coronal
-// sagittal).
+// sagittal), or `dialog:NAME`, the middle of a row or control of the open dialog as last drawn:
+// a listed file or folder by its name, or up, path, showall, raw, dims, open, cancel. Keys
+// (`key`) and typed text also reach the dialog's fields; in a scripted session the UI's clock
+// steps 1/30 s a frame, so two clicks on one row within 9 frames are a double-click.
 
 #include <string>
 #include <vector>
@@ -50,7 +62,7 @@ namespace volsg {
 
 /// A point as the script gives it: pixels, or a named place resolved at run time.
 struct ScriptPoint {
-    enum class Kind { Pixels, Canvas, World, View };
+    enum class Kind { Pixels, Canvas, World, View, Dialog };
     Kind kind = Kind::Pixels;
     std::string canvas;    ///< for Canvas and View: its name
     glm::dvec3 value{0.0}; ///< pixels (x, y), canvas (u, v) or a world point
@@ -81,6 +93,12 @@ struct ScriptStep {
         SeriesStep,
         SeriesPlay,
         SeriesPause,
+        Open,
+        Drop,
+        Recent,
+        Type,
+        DialogRaw,
+        Confirm,
         Quit
     };
     Kind kind = Kind::Wait;
@@ -89,12 +107,14 @@ struct ScriptStep {
     bool hasPoint = false;
     ScriptPoint point;
     double scroll = 0.0;
-    std::string text;       ///< key name, node name, panel name or file
-    bool sceneOnly = false; ///< Screenshot
-    int mods = 0;           ///< GLFW modifier bits
-    int line = 0;           ///< in the script file, for messages
-    double separation = 0;  ///< Stereo: the eye separation fraction (0: unchanged)
-    glm::ivec3 voxel{0};    ///< Cursor; Region: voxel.x = K
+    std::string text;                 ///< key name, node name, panel name or file
+    bool sceneOnly = false;           ///< Screenshot
+    int mods = 0;                     ///< GLFW modifier bits
+    int line = 0;                     ///< in the script file, for messages
+    double separation = 0;            ///< Stereo: the eye separation fraction (0: unchanged)
+    glm::ivec3 voxel{0};              ///< Cursor; Region: voxel.x = K; DialogRaw: the dimensions
+    glm::dvec3 spacing{1.0};          ///< DialogRaw
+    std::vector<std::string> files{}; ///< Drop
 };
 
 /// Reads a script (drag and click are expanded into their steps). Throws Error with the file,

@@ -48,6 +48,7 @@ void EditHistory::commit() {
     edits_.resize(done_);
     edits_.push_back(std::move(pending_));
     done_ = edits_.size();
+    ++changes_;
     pending_ = Edit{};
 }
 
@@ -71,6 +72,7 @@ bool EditHistory::undo() {
     if (open_) commit();
     if (done_ == 0) return false;
     --done_;
+    ++changes_;
     const Edit& e = edits_[done_];
     for (auto it = e.fields.rbegin(); it != e.fields.rend(); ++it)
         restore(*it, false);
@@ -83,6 +85,7 @@ bool EditHistory::redo() {
     for (const FieldState& s : edits_[done_].fields)
         restore(s, true);
     ++done_;
+    ++changes_;
     return true;
 }
 

@@ -3,6 +3,7 @@
 // text, FieldText.h) of the fields it touched, so one history serves all field types.
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,9 @@ public:
     /// The label of the edit undo() would revert ("" when none).
     std::string undoLabel() const;
     void clear();
+    /// Counts every commit, undo and redo (never reset): a change of it is a change of the
+    /// edited state, e.g. since a save.
+    std::uint64_t changeCount() const { return changes_; }
 
 private:
     struct FieldState {
@@ -54,6 +58,7 @@ private:
     std::size_t done_ = 0; ///< edits_[0, done_) are applied; the rest can be redone
     Edit pending_;
     bool open_ = false;
+    std::uint64_t changes_ = 0;
 };
 
 } // namespace volsg

@@ -83,7 +83,28 @@ ref_ptr<PerspectiveCamera> framingCamera(const Box3& box, const glm::dvec3& forw
     return camera;
 }
 
+const char* const kVolumeSuffixes[] = {".nrrd",   ".nhdr", ".mhd",    ".mha", ".nii",
+                                       ".nii.gz", ".hdr",  ".hdr.gz", ".dcm"};
+
 } // namespace
+
+const std::vector<std::string>& openableFileSuffixes() {
+    static const std::vector<std::string> suffixes = [] {
+        std::vector<std::string> out{".iv", ".wrl", ".vsgv", ".gltf", ".glb", ".raw", ".raw.gz"};
+        out.insert(out.end(), std::begin(kVolumeSuffixes), std::end(kVolumeSuffixes));
+        return out;
+    }();
+    return suffixes;
+}
+
+bool needsRawLayout(const std::string& path) {
+    const std::string name = lowerName(path);
+    if (endsWith(name, ".raw") || endsWith(name, ".raw.gz")) return true;
+    if (!endsWith(name, ".gz")) return false;
+    for (const char* tail : kVolumeSuffixes)
+        if (endsWith(name, tail)) return false;
+    return true;
+}
 
 FileKind fileKindOf(const std::string& path, const OpenFileOptions& options) {
     std::error_code ec;
@@ -101,8 +122,7 @@ FileKind fileKindOf(const std::string& path, const OpenFileOptions& options) {
     if (head.rfind("#Inventor", 0) == 0 || head.rfind("#VRML", 0) == 0 || endsWith(name, ".iv"))
         return FileKind::Scene;
     if (endsWith(name, ".gltf") || endsWith(name, ".glb")) return FileKind::Gltf;
-    for (const char* tail :
-         {".nrrd", ".nhdr", ".mhd", ".mha", ".nii", ".nii.gz", ".hdr", ".hdr.gz", ".dcm"})
+    for (const char* tail : kVolumeSuffixes)
         if (endsWith(name, tail)) return FileKind::Volume;
     if (head.size() == 132 && head.compare(128, 4, "DICM") == 0) return FileKind::Volume;
     if (options.raw) return FileKind::Volume;

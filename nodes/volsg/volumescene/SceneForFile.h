@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <volsg/core/Node.h>
 #include <volsg/volumeio/VolumeReader.h>
@@ -30,6 +31,15 @@ enum class FileKind {
 /// The kind of `path`; throws Error naming the file when it is none of them (a file of unknown
 /// name that is not a scene: the message says how to open it as raw voxels).
 FileKind fileKindOf(const std::string& path, const OpenFileOptions& options = {});
+
+/// The name endings (lower case) of the files volsg opens: scenes, .vsgv, the volume formats,
+/// glTF, and raw voxels (.raw, .raw.gz, which need a layout: needsRawLayout). A file browser
+/// lists these; fileKindOf decides by name and content.
+const std::vector<std::string>& openableFileSuffixes();
+
+/// Whether `path` is named as raw voxels (.raw, .raw.gz, or .gz not of a known format), which
+/// open only with a RawVolumeLayout.
+bool needsRawLayout(const std::string& path);
 
 /// The scene that shows a volume file (any FileKind::Volume): a camera that frames it from the
 /// patient's front (anterior, superior up: the view from -y with +z up), a MatrixTransform
