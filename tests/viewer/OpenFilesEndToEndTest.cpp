@@ -1,7 +1,8 @@
 // volsg-view opens data files directly (no hand-written scene) under Xvfb: a gzip raw volume
 // with its layout on the command line, a NRRD, a NIfTI and a DICOM series. The first image must
 // show the volume, and the volume must show structure; ctrl+s saves the scene the viewer built
-// as an .iv beside the data, which reads back.
+// as an .iv beside the data, which reads back. Then a turn, window/level and a preset change the
+// image, and the saved transfer function has the windowed range.
 //
 // Measures on the scene-only screenshot, against the viewer's background (26, 26, 31):
 // - not blank: at least 3% of the pixels differ from the background by more than 10/255;
@@ -69,7 +70,19 @@ void openAndLook(const std::string& name, const std::function<void(const fs::pat
     prepare(dir);
     const std::string shot = (dir / "first.png").string();
     const std::string script = (dir / "script.txt").string();
-    std::ofstream(script) << "wait 1\nscreenshot " << shot << " scene\nkey s ctrl\nwait 1\nquit\n";
+    const std::string turned = (dir / "turned.png").string();
+    const std::string edited = (dir / "edited.png").string();
+    const std::string editedScene = (dir / "edited.iv").string();
+    // The first image and ctrl+s; then a turn (a left drag), window/level (a ctrl+right drag:
+    // 20% of the view to the right widens the function's range by 20% of the data's span) and
+    // an opacity preset, saved again.
+    std::ofstream(script) << "wait 1\nscreenshot " << shot << " scene\nkey s ctrl\nwait 1\n"
+                          << "drag left view:3d:0.5,0.5 view:3d:0.7,0.5 4\nwait 2\n"
+                          << "screenshot " << turned << " scene\n"
+                          << "drag right view:3d:0.5,0.5 view:3d:0.7,0.5 4 ctrl\nwait 1\n"
+                          << "preset opacity CT soft tissue\nwait 2\n"
+                          << "screenshot " << edited << " scene\n"
+                          << "save " << editedScene << "\nquit\n";
     std::string log;
     const int status = runViewerScript((dir / name).string(),
                                        "--size 360x300 --no-panels " + arguments, script, log);
@@ -94,6 +107,22 @@ void openAndLook(const std::string& name, const std::function<void(const fs::pat
     const glm::vec2 range = static_cast<TransferFunction*>(transfers[0])->dataRange();
     CHECK(range.x == float(lo));
     CHECK(range.y == float(hi));
+
+    // The turn changed the image; window/level and the preset changed it again, and the saved
+    // function has the widened range around the same level.
+    const Image first = readPng(shot), afterTurn = readPng(turned), afterEdit = readPng(edited);
+    const int pixels = first.width * first.height;
+    CHECK(changedPixels(first, afterTurn, 10.0f / 255.0f) > pixels / 100);
+    CHECK(changedPixels(afterTurn, afterEdit, 10.0f / 255.0f) > pixels / 100);
+    ref_ptr<Node> editedRoot = readScene(editedScene);
+    const auto editedTransfers = findAll(*editedRoot, TransferFunction::classType());
+    REQUIRE(editedTransfers.size() == 1);
+    const glm::vec2 windowed = static_cast<TransferFunction*>(editedTransfers[0])->dataRange();
+    const double span = hi - lo;
+    CAPTURE(windowed.x);
+    CAPTURE(windowed.y);
+    CHECK(std::abs((windowed.y - windowed.x) - 1.2 * span) < 0.02 * span);
+    CHECK(std::abs(0.5 * (windowed.x + windowed.y) - 0.5 * (lo + hi)) < 0.02 * span);
     fs::remove_all(dir);
 }
 
