@@ -99,7 +99,9 @@ void ShapeRenderer::batch(const GpuMesh& gpu, const ShapeLook& look) {
     out.instance.model = glm::mat4(look.model);
     float shininess = m.shininess * 128.0f;
     glm::vec3 emissive = m.emissive;
-    if (look.baseColorOnly) emissive = glm::vec3(0.0f);
+    // Unlit (BASE_COLOR, or lines and points without normals: fill()): diffuse alone.
+    if (look.baseColorOnly || !(gpu.mode == GL_TRIANGLES || gpu.hasNormals))
+        emissive = glm::vec3(0.0f);
     out.instance.emissiveShininess = glm::vec4(emissive, shininess);
     out.instance.ambient = glm::vec4(m.ambient * look.environment.ambient, 0.0f);
     out.instance.diffuseAlpha = glm::vec4(m.diffuse, 1.0f - m.transparency);

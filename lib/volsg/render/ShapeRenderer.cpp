@@ -127,9 +127,10 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
     item.specular = m.specular;
     item.shininess = m.shininess * 128.0f;
     item.alpha = 1.0f - m.transparency;
-    // Lines and points are lit only with normals of their own.
+    // Lines and points are lit only with normals of their own; without, Coin draws them in
+    // its BASE_COLOR light model (SoIndexedLineSet, SoPointSet): the diffuse colour alone.
     item.lit = gpu.mode == GL_TRIANGLES || gpu.hasNormals;
-    if (look.baseColorOnly) {
+    if (look.baseColorOnly || !item.lit) {
         item.lit = false;
         item.emissive = glm::vec3(0.0f);
     }

@@ -88,7 +88,8 @@ struct ShapeLook {
 /// then the texture by its model, then fog; strength is 1 for directional lights, the
 /// environment's attenuation and the cone for point and spot lights. Vertex colours replace
 /// the diffuse colour, N is flipped towards the viewer under two-sided lighting, and H is the half
-/// vector to the viewer. Lines and points without normals are unlit: emissive + diffuse.
+/// vector to the viewer. Lines and points without normals are unlit, as Coin draws them (its
+/// BASE_COLOR light model): the diffuse (or vertex) colour alone.
 class ShapeRenderer {
 public:
     static constexpr int kMaxLights = kMaxSurfaceLights;

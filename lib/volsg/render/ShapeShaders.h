@@ -45,7 +45,7 @@ inline constexpr const char* shapeFragment = R"GLSL(
 in vec2 vTexCoord;
 in float vEyeDistance;
 
-uniform bool uLit;        // false for lines and points without normals: emissive + diffuse
+uniform bool uLit;        // false for lines and points without normals: emissive (0 then) + diffuse
 uniform bool uHasNormals; // else flat normals from the screen-space derivatives
 uniform bool uHasColors;  // vertex colours replace the diffuse colour
 uniform bool uTwoSided;   // a face seen from behind is lit on that side (ShapeHints)

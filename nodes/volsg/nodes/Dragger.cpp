@@ -167,6 +167,7 @@ glm::dmat4 Dragger::motionMatrix() const {
         part && !part->isDefault())
         if (const auto* m = dynamic_cast<const MatrixTransform*>(part->getValue()))
             base = glm::dmat4(m->matrix());
+    if (readVersion_ != 0 && version() == readVersion_) return base;
     // A field never set has Coin's default (the table's fields start at zero values).
     const auto vec3 = [this](const char* name, glm::dvec3 fallback) {
         const auto* f = dynamic_cast<const SFVec3f*>(findField(name));
@@ -260,6 +261,10 @@ Node* Dragger::restGraph() {
         restVersion_ = version();
     }
     return rest_.get();
+}
+
+void Dragger::readDone(const ReadContext&) {
+    if (catalog_ && catalog_->readValuesIgnored) readVersion_ = version();
 }
 
 void Dragger::doAction(Action& action) {

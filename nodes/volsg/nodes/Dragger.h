@@ -47,6 +47,9 @@ public:
     std::vector<ref_ptr<Node>>* children() override { return nullptr; }
     using Node::children;
     void doAction(Action& action) override;
+    /// Notes the version the file left, for a type whose Coin dragger ignores the value
+    /// fields read (DraggerCatalog::readValuesIgnored).
+    void readDone(const ReadContext& context) override;
 
     /// The motion matrix at rest: the motionMatrix part's matrix (identity when unset) with
     /// the value fields worked in (SoDragger::workFieldsIntoTransform).
@@ -70,6 +73,7 @@ private:
     std::unordered_map<std::string, ref_ptr<Node>> partDefaults_;
     ref_ptr<Node> rest_;
     std::uint64_t restVersion_ = 0;
+    std::uint64_t readVersion_ = 0; ///< nonzero: the version when read, values ignored then
 };
 
 } // namespace volsg

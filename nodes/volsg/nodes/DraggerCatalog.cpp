@@ -17,7 +17,9 @@
 //   name XDragger [part=@res ...]   a child dragger; `part=` a default for one of its parts
 //                                   (a dotted path reaches a grandchild), `@res` a name in
 //                                   this type's resource file, `{}` an empty Separator
-// A type starts with `[TypeName resourceFile.iv]`.
+// A type starts with `[TypeName resourceFile.iv]`, and the word readValuesIgnored when Coin's
+// dragger of that type ignores the value fields a file gives (DraggerCatalog::
+// readValuesIgnored).
 #include <volsg/core/Error.h>
 #include <volsg/nodes/DraggerCatalog.h>
 
@@ -156,7 +158,7 @@ topSeparator Separator
    userRotator @trackballUserRotator
    userRotatorActive @trackballUserRotatorActive
 
-[TransformBoxDragger transformBoxDragger.iv]
+[TransformBoxDragger transformBoxDragger.iv readValuesIgnored]
 topSeparator Separator
  motionMatrix Motion
  surroundScale -
@@ -233,7 +235,7 @@ topSeparator Separator
    xyFeedback @dragPointXYFeedback
  geomSeparator Separator
 
-[JackDragger jackDragger.iv]
+[JackDragger jackDragger.iv readValuesIgnored]
 topSeparator Separator
  motionMatrix Motion
  surroundScale -
@@ -291,7 +293,7 @@ topSeparator Separator
     cornerScaleTab2 -
     cornerScaleTab3 -
 
-[TabBoxDragger tabBoxDragger.iv]
+[TabBoxDragger tabBoxDragger.iv readValuesIgnored]
 topSeparator Separator
  motionMatrix Motion
  surroundScale -
@@ -367,7 +369,9 @@ std::vector<DraggerCatalog> parseCatalogs() {
         if (line[0] == '[') {
             DraggerCatalog catalog;
             std::istringstream words(line.substr(1, line.find(']') - 1));
-            words >> catalog.typeName >> catalog.resourceFile;
+            std::string flag;
+            words >> catalog.typeName >> catalog.resourceFile >> flag;
+            catalog.readValuesIgnored = flag == "readValuesIgnored";
             out.push_back(std::move(catalog));
             parents.clear();
             continue;

@@ -35,6 +35,10 @@ struct DraggerCatalog {
     std::string typeName;           ///< "Translate1Dragger"
     std::string resourceFile;       ///< "translate1Dragger.iv", or empty
     std::vector<DraggerPart> parts; ///< parts[0] is topSeparator
+    /// Coin's dragger of this type does not work the value fields read from a file into its
+    /// motion matrix (its setUpConnections does not call its field sensor): it stays where
+    /// the motionMatrix part puts it until a value field changes.
+    bool readValuesIgnored = false;
 };
 
 /// The catalogs of every dragger type (parsed once from the table in DraggerCatalog.cpp).
