@@ -7,10 +7,13 @@
 #include <volsg/nodes/Dragger.h>
 #include <volsg/nodes/DraggerCatalog.h>
 #include <volsg/nodes/MatrixTransform.h>
+#include <volsg/nodes/Rotation.h>
+#include <volsg/nodes/Scale.h>
 #include <volsg/nodes/Separator.h>
 #include <volsg/nodes/Switch.h>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -120,6 +123,14 @@ ref_ptr<Node> inlineNode(const std::string& text) {
     return node;
 }
 
+Rotation rotationOf(const glm::dquat& q) {
+    const glm::dvec3 axis = glm::axis(q);
+    Rotation r;
+    r.angle = float(glm::angle(q));
+    if (r.angle != 0.0f) r.axis = glm::vec3(axis);
+    return r;
+}
+
 const DraggerTypeInfo* infoOf(std::string_view name) {
     for (const DraggerTypeInfo& info : draggerTypeInfos())
         if (name == info.type->name()) return &info;
@@ -222,6 +233,21 @@ ref_ptr<Node> Dragger::buildPart(std::size_t index) {
         if (const auto* f = dynamic_cast<const SFVec3f*>(findField("center")); f && !f->isDefault())
             toCenter->matrix = glm::translate(glm::mat4(1.0f), f->getValue());
         return toCenter;
+    }
+    case Kind::RotationInverse: {
+        ref_ptr<RotationNode> inverse = RotationNode::create();
+        inverse->rotation = rotationOf(glm::inverse(decomposeTransform(motionMatrix()).rotation));
+        return inverse;
+    }
+    case Kind::BeamScale: {
+        // Coin's constructor sets the beam for angle 1; the angle changes it when it changes.
+        const auto* angle = dynamic_cast<const SFFloat*>(findField("angle"));
+        const bool read =
+            angle && !angle->isDefault() && !(readVersion_ != 0 && version() == readVersion_);
+        const float across = std::tan(read ? angle->getValue() : 1.0f);
+        ref_ptr<Scale> beam = Scale::create();
+        beam->scaleFactor = glm::vec3(across, across, 1.0f);
+        return beam;
     }
     case Kind::Resource: {
         const NamedNodes& named = resourceNodes(catalog_->resourceFile);

@@ -11,6 +11,8 @@
 //   name Switch N                   a Switch showing child N at rest (-1 none, -3 all)
 //   name Motion                     the motion matrix (motionMatrix)
 //   name CenterMatrix               a translation by the center field (translateToCenter)
+//   name RotationInverse            the inverse of the motion's rotation (translatorRotInv)
+//   name BeamScale                  tan(angle) across the beam (a SpotLightDragger's beamScale)
 //   name -                          no node unless the file sets it
 //   name @resourceName              the node DEF'd so in the type's resource file
 //   name = Inventor text            a node the constructor makes
@@ -317,6 +319,259 @@ topSeparator Separator
   tabPlane6 TabPlaneDragger translator=@tabBoxTranslator scaleTabMaterial=@tabBoxScaleTabMaterial scaleTabHints=@tabBoxScaleTabHints
  geomSeparator Separator
   boxGeom @tabBoxBoxGeom
+
+[HandleBoxDragger handleBoxDragger.iv]
+topSeparator Separator
+ motionMatrix Motion
+ surroundScale -
+ geomSeparator Separator
+  drawStyle -
+  translator1Switch Switch 0
+   translator1 @handleBoxTranslator1
+   translator1Active @handleBoxTranslator1Active
+  translator2Switch Switch 0
+   translator2 @handleBoxTranslator2
+   translator2Active @handleBoxTranslator2Active
+  translator3Switch Switch 0
+   translator3 @handleBoxTranslator3
+   translator3Active @handleBoxTranslator3Active
+  translator4Switch Switch 0
+   translator4 @handleBoxTranslator4
+   translator4Active @handleBoxTranslator4Active
+  translator5Switch Switch 0
+   translator5 @handleBoxTranslator5
+   translator5Active @handleBoxTranslator5Active
+  translator6Switch Switch 0
+   translator6 @handleBoxTranslator6
+   translator6Active @handleBoxTranslator6Active
+  extruder1Switch Switch 0
+   extruder1 @handleBoxExtruder1
+   extruder1Active @handleBoxExtruder1Active
+  extruder2Switch Switch 0
+   extruder2 @handleBoxExtruder2
+   extruder2Active @handleBoxExtruder2Active
+  extruder3Switch Switch 0
+   extruder3 @handleBoxExtruder3
+   extruder3Active @handleBoxExtruder3Active
+  extruder4Switch Switch 0
+   extruder4 @handleBoxExtruder4
+   extruder4Active @handleBoxExtruder4Active
+  extruder5Switch Switch 0
+   extruder5 @handleBoxExtruder5
+   extruder5Active @handleBoxExtruder5Active
+  extruder6Switch Switch 0
+   extruder6 @handleBoxExtruder6
+   extruder6Active @handleBoxExtruder6Active
+  uniform1Switch Switch 0
+   uniform1 @handleBoxUniform1
+   uniform1Active @handleBoxUniform1Active
+  uniform2Switch Switch 0
+   uniform2 @handleBoxUniform2
+   uniform2Active @handleBoxUniform2Active
+  uniform3Switch Switch 0
+   uniform3 @handleBoxUniform3
+   uniform3Active @handleBoxUniform3Active
+  uniform4Switch Switch 0
+   uniform4 @handleBoxUniform4
+   uniform4Active @handleBoxUniform4Active
+  uniform5Switch Switch 0
+   uniform5 @handleBoxUniform5
+   uniform5Active @handleBoxUniform5Active
+  uniform6Switch Switch 0
+   uniform6 @handleBoxUniform6
+   uniform6Active @handleBoxUniform6Active
+  uniform7Switch Switch 0
+   uniform7 @handleBoxUniform7
+   uniform7Active @handleBoxUniform7Active
+  uniform8Switch Switch 0
+   uniform8 @handleBoxUniform8
+   uniform8Active @handleBoxUniform8Active
+  arrowTranslation -
+  arrow1Switch Switch -1
+   arrow1 @handleBoxArrow1
+  arrow2Switch Switch -1
+   arrow2 @handleBoxArrow2
+  arrow3Switch Switch -1
+   arrow3 @handleBoxArrow3
+  arrow4Switch Switch -1
+   arrow4 @handleBoxArrow4
+  arrow5Switch Switch -1
+   arrow5 @handleBoxArrow5
+  arrow6Switch Switch -1
+   arrow6 @handleBoxArrow6
+
+[DirectionalLightDragger directionalLightDragger.iv readValuesIgnored]
+topSeparator Separator
+ motionMatrix Motion
+ material @directionalLightOverallMaterial
+ translatorSep Separator
+  translatorRotInv RotationInverse
+  translator DragPointDragger xTranslator.translator=@directionalLightTranslatorLineTranslator xTranslator.translatorActive=@directionalLightTranslatorLineTranslatorActive yTranslator.translator=@directionalLightTranslatorLineTranslator yTranslator.translatorActive=@directionalLightTranslatorLineTranslatorActive zTranslator.translator=@directionalLightTranslatorLineTranslator zTranslator.translatorActive=@directionalLightTranslatorLineTranslatorActive xyTranslator.translator=@directionalLightTranslatorPlaneTranslator xyTranslator.translatorActive=@directionalLightTranslatorPlaneTranslatorActive xzTranslator.translator=@directionalLightTranslatorPlaneTranslator xzTranslator.translatorActive=@directionalLightTranslatorPlaneTranslatorActive yzTranslator.translator=@directionalLightTranslatorPlaneTranslator yzTranslator.translatorActive=@directionalLightTranslatorPlaneTranslatorActive
+ rotator RotateSphericalDragger rotator=@directionalLightRotatorRotator rotatorActive=@directionalLightRotatorRotatorActive feedback=@directionalLightRotatorFeedback feedbackActive=@directionalLightRotatorFeedbackActive
+ geomSeparator Separator
+
+[PointLightDragger pointLightDragger.iv readValuesIgnored]
+topSeparator Separator
+ motionMatrix Motion
+ material @pointLightOverallMaterial
+ translator DragPointDragger xTranslator.translator=@pointLightTranslatorLineTranslator xTranslator.translatorActive=@pointLightTranslatorLineTranslatorActive yTranslator.translator=@pointLightTranslatorLineTranslator yTranslator.translatorActive=@pointLightTranslatorLineTranslatorActive zTranslator.translator=@pointLightTranslatorLineTranslator zTranslator.translatorActive=@pointLightTranslatorLineTranslatorActive xyTranslator.translator=@pointLightTranslatorPlaneTranslator xyTranslator.translatorActive=@pointLightTranslatorPlaneTranslatorActive xzTranslator.translator=@pointLightTranslatorPlaneTranslator xzTranslator.translatorActive=@pointLightTranslatorPlaneTranslatorActive yzTranslator.translator=@pointLightTranslatorPlaneTranslator yzTranslator.translatorActive=@pointLightTranslatorPlaneTranslatorActive
+ geomSeparator Separator
+
+[SpotLightDragger spotLightDragger.iv readValuesIgnored]
+topSeparator Separator
+ motionMatrix Motion
+ material @spotLightOverallMaterial
+ translatorSep Separator
+  translatorRotInv RotationInverse
+  translator DragPointDragger xTranslator.translator=@spotLightTranslatorLineTranslator xTranslator.translatorActive=@spotLightTranslatorLineTranslatorActive yTranslator.translator=@spotLightTranslatorLineTranslator yTranslator.translatorActive=@spotLightTranslatorLineTranslatorActive zTranslator.translator=@spotLightTranslatorLineTranslator zTranslator.translatorActive=@spotLightTranslatorLineTranslatorActive xyTranslator.translator=@spotLightTranslatorPlaneTranslator xyTranslator.translatorActive=@spotLightTranslatorPlaneTranslatorActive xzTranslator.translator=@spotLightTranslatorPlaneTranslator xzTranslator.translatorActive=@spotLightTranslatorPlaneTranslatorActive yzTranslator.translator=@spotLightTranslatorPlaneTranslator yzTranslator.translatorActive=@spotLightTranslatorPlaneTranslatorActive
+ rotator RotateSphericalDragger rotator=@spotLightRotatorRotator rotatorActive=@spotLightRotatorRotatorActive feedback=@spotLightRotatorFeedback feedbackActive=@spotLightRotatorFeedbackActive
+ beamSep Separator
+  beamPlacement @spotLightBeamPlacement
+  beamScale BeamScale
+  beamSwitch Switch 0
+   beam @spotLightBeam
+   beamActive @spotLightBeamActive
+ geomSeparator Separator
+
+[TransformerDragger transformerDragger.iv]
+topSeparator Separator
+ motionMatrix Motion
+ surroundScale -
+ overallStyle @transformerOverallStyle
+ geomSeparator Separator
+  axisFeedbackSep Separator
+   axisFeedbackLocation -
+   xAxisFeedbackSwitch Switch -1
+    xAxisFeedbackActive @transformerXAxisFeedbackActive
+    xAxisFeedbackSelect @transformerXAxisFeedbackSelect
+    xCrosshairFeedback @transformerXCrosshairFeedback
+   yAxisFeedbackSwitch Switch -1
+    yAxisFeedbackActive @transformerYAxisFeedbackActive
+    yAxisFeedbackSelect @transformerYAxisFeedbackSelect
+    yCrosshairFeedback @transformerYCrosshairFeedback
+   zAxisFeedbackSwitch Switch -1
+    zAxisFeedbackActive @transformerZAxisFeedbackActive
+    zAxisFeedbackSelect @transformerZAxisFeedbackSelect
+    zCrosshairFeedback @transformerZCrosshairFeedback
+  translateBoxFeedbackSep Separator
+   translateBoxFeedbackSwitch Switch -1
+    translateBoxFeedbackRotation -
+    translateBoxFeedback @transformerTranslateBoxFeedback
+  scaleBoxFeedbackSwitch Switch -1
+   scaleBoxFeedback @transformerScaleBoxFeedback
+  posXWallFeedbackSwitch Switch -1
+   posXWallFeedback @transformerPosXWallFeedback
+   posXRoundWallFeedback @transformerPosXRoundWallFeedback
+  posYWallFeedbackSwitch Switch -1
+   posYWallFeedback @transformerPosYWallFeedback
+   posYRoundWallFeedback @transformerPosYRoundWallFeedback
+  posZWallFeedbackSwitch Switch -1
+   posZWallFeedback @transformerPosZWallFeedback
+   posZRoundWallFeedback @transformerPosZRoundWallFeedback
+  negXWallFeedbackSwitch Switch -1
+   negXWallFeedback @transformerNegXWallFeedback
+   negXRoundWallFeedback @transformerNegXRoundWallFeedback
+  negYWallFeedbackSwitch Switch -1
+   negYWallFeedback @transformerNegYWallFeedback
+   negYRoundWallFeedback @transformerNegYRoundWallFeedback
+  negZWallFeedbackSwitch Switch -1
+   negZWallFeedback @transformerNegZWallFeedback
+   negZRoundWallFeedback @transformerNegZRoundWallFeedback
+  radialFeedbackSwitch Switch -1
+   radialFeedback @transformerRadialFeedback
+ translatorSep Separator
+  translator1Switch Switch 0
+   translator1LocateGroup Separator
+    translator1 @transformerTranslator1
+   translator1Active @transformerTranslator1Active
+  translator2Switch Switch 0
+   translator2LocateGroup Separator
+    translator2 @transformerTranslator2
+   translator2Active @transformerTranslator2Active
+  translator3Switch Switch 0
+   translator3LocateGroup Separator
+    translator3 @transformerTranslator3
+   translator3Active @transformerTranslator3Active
+  translator4Switch Switch 0
+   translator4LocateGroup Separator
+    translator4 @transformerTranslator4
+   translator4Active @transformerTranslator4Active
+  translator5Switch Switch 0
+   translator5LocateGroup Separator
+    translator5 @transformerTranslator5
+   translator5Active @transformerTranslator5Active
+  translator6Switch Switch 0
+   translator6LocateGroup Separator
+    translator6 @transformerTranslator6
+   translator6Active @transformerTranslator6Active
+ rotatorSep Separator
+  rotator1Switch Switch 0
+   rotator1LocateGroup Separator
+    rotator1 @transformerRotator1
+   rotator1Active @transformerRotator1Active
+  rotator2Switch Switch 0
+   rotator2LocateGroup Separator
+    rotator2 @transformerRotator2
+   rotator2Active @transformerRotator2Active
+  rotator3Switch Switch 0
+   rotator3LocateGroup Separator
+    rotator3 @transformerRotator3
+   rotator3Active @transformerRotator3Active
+  rotator4Switch Switch 0
+   rotator4LocateGroup Separator
+    rotator4 @transformerRotator4
+   rotator4Active @transformerRotator4Active
+  rotator5Switch Switch 0
+   rotator5LocateGroup Separator
+    rotator5 @transformerRotator5
+   rotator5Active @transformerRotator5Active
+  rotator6Switch Switch 0
+   rotator6LocateGroup Separator
+    rotator6 @transformerRotator6
+   rotator6Active @transformerRotator6Active
+ scaleSep Separator
+  scale1Switch Switch 0
+   scale1LocateGroup Separator
+    scale1 @transformerScale1
+   scale1Active @transformerScale1Active
+  scale2Switch Switch 0
+   scale2LocateGroup Separator
+    scale2 @transformerScale2
+   scale2Active @transformerScale2Active
+  scale3Switch Switch 0
+   scale3LocateGroup Separator
+    scale3 @transformerScale3
+   scale3Active @transformerScale3Active
+  scale4Switch Switch 0
+   scale4LocateGroup Separator
+    scale4 @transformerScale4
+   scale4Active @transformerScale4Active
+  scale5Switch Switch 0
+   scale5LocateGroup Separator
+    scale5 @transformerScale5
+   scale5Active @transformerScale5Active
+  scale6Switch Switch 0
+   scale6LocateGroup Separator
+    scale6 @transformerScale6
+   scale6Active @transformerScale6Active
+  scale7Switch Switch 0
+   scale7LocateGroup Separator
+    scale7 @transformerScale7
+   scale7Active @transformerScale7Active
+  scale8Switch Switch 0
+   scale8LocateGroup Separator
+    scale8 @transformerScale8
+   scale8Active @transformerScale8Active
+ circleFeedbackSep Separator
+  circleFeedbackTransformSwitch Switch -1
+   circleFeedbackAntiSquish = AntiSquish { }
+   circleFeedbackTransform = Transform { }
+  xCircleFeedbackSwitch Switch -1
+   xCircleFeedback @transformerXCircleFeedback
+  yCircleFeedbackSwitch Switch -1
+   yCircleFeedback @transformerYCircleFeedback
+  zCircleFeedbackSwitch Switch -1
+   zCircleFeedback @transformerZCircleFeedback
 )";
 
 DraggerPart parsePart(const std::string& line, std::size_t& depth) {
@@ -337,6 +592,10 @@ DraggerPart parsePart(const std::string& line, std::size_t& depth) {
         part.kind = Kind::Motion;
     } else if (kind == "CenterMatrix") {
         part.kind = Kind::CenterMatrix;
+    } else if (kind == "RotationInverse") {
+        part.kind = Kind::RotationInverse;
+    } else if (kind == "BeamScale") {
+        part.kind = Kind::BeamScale;
     } else if (kind == "-") {
         part.kind = Kind::Null;
     } else if (kind == "=") {
