@@ -129,6 +129,27 @@ TEST_CASE("Translation moves a cube's silhouette by translation x 20 pixels") {
     CHECK(coveredRect(moved) - coveredRect(still) == glm::ivec4(10, 15, 10, 15));
 }
 
+TEST_CASE("DrawStyle LINES draws a cube's and a face set's polygon edges, not their diagonals") {
+    // Coin draws cubes as quads and face sets as polygons: in line mode no triangulation
+    // diagonal shows. A 2 x 2 square seen straight on: its border is drawn, its centre (on the
+    // diagonal of both triangles) is not.
+    Offscreen gl;
+    for (const std::string& shape :
+         {std::string("Cube { width 2 height 2 depth 0 }\n"),
+          std::string("Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] }\n"
+                      "IndexedFaceSet { coordIndex [ 0, 1, 2, 3, -1 ] }\n")}) {
+        CAPTURE(shape);
+        const Image image =
+            renderText(gl, kCamera + emissive("0 1 0") + "DrawStyle { style LINES }\n" + shape);
+        // A line on a pixel boundary may fall on either side: 1 pixel of tolerance.
+        const glm::ivec4 border = coveredRect(image) - expectedRect(-1.0, -1.0, 1.0, 1.0);
+        CHECK(glm::all(glm::lessThanEqual(glm::abs(border), glm::ivec4(1))));
+        CHECK(colorAt(image, 0.0, 0.0) == glm::vec3(0.0f));
+        CHECK(colorAt(image, 0.5, 0.5) == glm::vec3(0.0f));
+        CHECK(colorAt(image, -0.5, -0.5) == glm::vec3(0.0f));
+    }
+}
+
 TEST_CASE("Rotation and RotationXYZ turn a 2 x 1 box's silhouette into 1 x 2") {
     Offscreen gl;
     const std::string box = emissive("0 1 0") + "Cube { width 2 height 1 depth 0.5 }\n";

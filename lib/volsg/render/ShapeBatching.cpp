@@ -150,8 +150,7 @@ void ShapeRenderer::flushOpaque() {
                                   reinterpret_cast<const void*>(base + offset));
             glVertexAttribDivisor(8 + k, 1);
         }
-        glDrawElementsInstanced(gpu.mode, gpu.indexCount, GL_UNSIGNED_INT, nullptr,
-                                GLsizei(ranges[g].second));
+        drawElements(item, GLsizei(ranges[g].second));
         restoreState(item);
         ++drawsLastFrame_;
     }

@@ -181,7 +181,7 @@ void ShapeRenderer::draw(const DrawItem& item) {
     program_.use();
     applyState(loc_, item, true);
     gpu.vertexArray.bind();
-    glDrawElements(gpu.mode, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+    drawElements(item, 1);
     restoreState(item);
     ++drawsLastFrame_;
 }
@@ -235,7 +235,7 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
     // filled polygons, one-pixel lines and no culling.
     const bool lines = item.style == ShapeLook::Style::Lines;
     const bool points = item.style == ShapeLook::Style::Points || gpu.mode == GL_POINTS;
-    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled)
+    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled && !drawsOutline(item))
         glPolygonMode(GL_FRONT_AND_BACK, lines ? GL_LINE : GL_POINT);
     if (item.lineWidth != 1.0f) glLineWidth(item.lineWidth);
     if (points && item.pointSize != 1.0f) glPointSize(item.pointSize);
@@ -246,6 +246,26 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
     }
 }
 
+bool ShapeRenderer::drawsOutline(const DrawItem& item) {
+    return item.style == ShapeLook::Style::Lines && item.mesh->mode == GL_TRIANGLES &&
+           item.mesh->outlineCount > 0;
+}
+
+void ShapeRenderer::drawElements(const DrawItem& item, GLsizei instances) {
+    const GpuMesh& gpu = *item.mesh;
+    // The LINES style of polygons with an outline: its edges, after the triangles.
+    const bool outline = drawsOutline(item);
+    const GLenum mode = outline ? GL_LINES : gpu.mode;
+    const GLsizei count = outline ? gpu.outlineCount : gpu.indexCount;
+    const void* first =
+        outline ? reinterpret_cast<const void*>(std::size_t(gpu.indexCount) * sizeof(std::uint32_t))
+                : nullptr;
+    if (instances == 1)
+        glDrawElements(mode, count, GL_UNSIGNED_INT, first);
+    else
+        glDrawElementsInstanced(mode, count, GL_UNSIGNED_INT, first, instances);
+}
+
 void ShapeRenderer::restoreState(const DrawItem& item) {
     const GpuMesh& gpu = *item.mesh;
     const bool points = item.style == ShapeLook::Style::Points || gpu.mode == GL_POINTS;
@@ -253,7 +273,7 @@ void ShapeRenderer::restoreState(const DrawItem& item) {
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
     }
-    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled)
+    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled && !drawsOutline(item))
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     if (item.lineWidth != 1.0f) glLineWidth(1.0f);
     if (points && item.pointSize != 1.0f) glPointSize(1.0f);

@@ -225,6 +225,10 @@ private:
     void applyState(const Locations& at, const DrawItem& item, bool withMaterial);
     /// Undoes what applyState changed beyond uniforms (culling, polygon mode, widths).
     void restoreState(const DrawItem& item);
+    /// Draws the item's mesh (`instances` of it): its primitives, or its polygon outlines
+    /// under the LINES draw style when the mesh has them (Mesh::outline).
+    static void drawElements(const DrawItem& item, GLsizei instances);
+    static bool drawsOutline(const DrawItem& item);
     void batch(const GpuMesh& gpu, const ShapeLook& look);
     int internScope(const ShapeLook& look, bool lit);
     Locations locate(const Program& program) const;
