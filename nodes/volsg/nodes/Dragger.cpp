@@ -4,6 +4,7 @@
 #include <volsg/io/InventorTypes.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/math/TransformParts.h>
+#include <volsg/nodes/Coordinate3.h>
 #include <volsg/nodes/Dragger.h>
 #include <volsg/nodes/DraggerCatalog.h>
 #include <volsg/nodes/MatrixTransform.h>
@@ -11,6 +12,7 @@
 #include <volsg/nodes/Scale.h>
 #include <volsg/nodes/Separator.h>
 #include <volsg/nodes/Switch.h>
+#include <volsg/state/State.h>
 
 #include <array>
 #include <cmath>
@@ -249,6 +251,15 @@ ref_ptr<Node> Dragger::buildPart(std::size_t index) {
         beam->scaleFactor = glm::vec3(across, across, 1.0f);
         return beam;
     }
+    case Kind::EdgeScaleCoords:
+    case Kind::CornerScaleCoords: {
+        ref_ptr<Coordinate3> coords = Coordinate3::create();
+        (part.kind == Kind::EdgeScaleCoords ? edgeScaleCoords_ : cornerScaleCoords_) = coords;
+        const glm::vec2 size = scaleTabSize_;
+        scaleTabSize_ = glm::vec2(-1.0f);
+        setScaleTabSize(size);
+        return coords;
+    }
     case Kind::Resource: {
         const NamedNodes& named = resourceNodes(catalog_->resourceFile);
         const auto it = named.find(part.value);
@@ -289,6 +300,39 @@ Node* Dragger::restGraph() {
     return rest_.get();
 }
 
+void Dragger::setScaleTabSize(glm::vec2 size) {
+    if (size == scaleTabSize_) return;
+    scaleTabSize_ = size;
+    // Coin's corners (SoTabPlaneDragger::reallyAdjustScaleTabSize), 0.01 in front of the plane.
+    const float hx = size.x * 0.5f, hy = size.y * 0.5f, sx = size.x, sy = size.y, z = 0.01f;
+    if (auto* edge = dynamic_cast<Coordinate3*>(edgeScaleCoords_.get()))
+        edge->point = {{hx, 1, z},   {-hx, 1, z},  {-hx, 1 - sy, z},  {hx, 1 - sy, z},
+                       {1, -hy, z},  {1, hy, z},   {1 - sx, hy, z},   {1 - sx, -hy, z},
+                       {-hx, -1, z}, {hx, -1, z},  {hx, -1 + sy, z},  {-hx, -1 + sy, z},
+                       {-1, hy, z},  {-1, -hy, z}, {-1 + sx, -hy, z}, {-1 + sx, hy, z}};
+    if (auto* corner = dynamic_cast<Coordinate3*>(cornerScaleCoords_.get()))
+        corner->point = {{1, 1, z},   {1 - sx, 1, z},   {1 - sx, 1 - sy, z},   {1, 1 - sy, z},
+                         {1, -1, z},  {1, -1 + sy, z},  {1 - sx, -1 + sy, z},  {1 - sx, -1, z},
+                         {-1, -1, z}, {-1 + sx, -1, z}, {-1 + sx, -1 + sy, z}, {-1, -1 + sy, z},
+                         {-1, 1, z},  {-1, 1 - sy, z},  {-1 + sx, 1 - sy, z},  {-1 + sx, 1, z}};
+}
+
+void Dragger::adjustScaleTabs(const Action& action) {
+    const StateView* view = action.state().view();
+    if (!view || !view->projected || view->width <= 0) return;
+    const glm::dmat4 toWorld = action.state().modelMatrix() * motionMatrix();
+    const glm::dvec4 eye = view->view * toWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    // The view volume's width at the dragger's depth (SbViewVolume::getWorldToScreenScale),
+    // times 10 pixels over the viewport's width.
+    const bool perspective = view->projection[3][3] == 0.0;
+    const double across =
+        perspective ? 2.0 * std::abs(eye.z) / view->projection[0][0] : 2.0 / view->projection[0][0];
+    const double size = across * 10.0 / double(view->width);
+    const glm::dvec3 scale = decomposeTransform(toWorld).scaleFactor;
+    if (scale.x == 0.0 || scale.y == 0.0 || !std::isfinite(size)) return;
+    setScaleTabSize(glm::vec2(float(std::abs(size / scale.x)), float(std::abs(size / scale.y))));
+}
+
 void Dragger::readDone(const ReadContext&) {
     if (catalog_ && catalog_->readValuesIgnored) readVersion_ = version();
 }
@@ -297,7 +341,9 @@ void Dragger::doAction(Action& action) {
     if (const auto* callbacks = dynamic_cast<const SFNode*>(findField("callbackList")))
         if (Node* node = callbacks->getValue(); node && !action.isTerminated())
             action.traverse(*node);
-    if (Node* rest = restGraph(); rest && !action.isTerminated()) action.traverse(*rest);
+    Node* rest = restGraph();
+    if (edgeScaleCoords_ || cornerScaleCoords_) adjustScaleTabs(action);
+    if (rest && !action.isTerminated()) action.traverse(*rest);
 }
 
 } // namespace volsg

@@ -68,12 +68,18 @@ protected:
 
 private:
     ref_ptr<Node> buildPart(std::size_t index);
+    /// A TabPlaneDragger's scale tabs: 10 pixels on screen when the action has a projected
+    /// view (Coin's reallyAdjustScaleTabSize at each render), 0.08 until then.
+    void adjustScaleTabs(const Action& action);
+    void setScaleTabSize(glm::vec2 size);
     const DraggerCatalog* catalog_ = nullptr;
     const NodeType* type_ = nullptr;
     std::unordered_map<std::string, ref_ptr<Node>> partDefaults_;
     ref_ptr<Node> rest_;
     std::uint64_t restVersion_ = 0;
     std::uint64_t readVersion_ = 0; ///< nonzero: the version when read, values ignored then
+    ref_ptr<Node> edgeScaleCoords_, cornerScaleCoords_; ///< Coordinate3 of the rest graph
+    glm::vec2 scaleTabSize_{0.08f};
 };
 
 } // namespace volsg

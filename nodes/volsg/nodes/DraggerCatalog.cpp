@@ -13,6 +13,8 @@
 //   name CenterMatrix               a translation by the center field (translateToCenter)
 //   name RotationInverse            the inverse of the motion's rotation (translatorRotInv)
 //   name BeamScale                  tan(angle) across the beam (a SpotLightDragger's beamScale)
+//   name EdgeScaleCoords            a TabPlaneDragger's tab corners, sized on screen at each
+//   name CornerScaleCoords          render (Dragger::adjustScaleTabs)
 //   name -                          no node unless the file sets it
 //   name @resourceName              the node DEF'd so in the type's resource file
 //   name = Inventor text            a node the constructor makes
@@ -281,19 +283,19 @@ topSeparator Separator
    scaleTabs Separator
     scaleTabMaterial @tabPlaneScaleTabMaterial
     scaleTabHints @tabPlaneScaleTabHints
-    scaleTabMaterialBinding -
-    scaleTabNormalBinding -
-    scaleTabNormal -
-    edgeScaleCoords -
-    edgeScaleTab0 -
-    edgeScaleTab1 -
-    edgeScaleTab2 -
-    edgeScaleTab3 -
-    cornerScaleCoords -
-    cornerScaleTab0 -
-    cornerScaleTab1 -
-    cornerScaleTab2 -
-    cornerScaleTab3 -
+    scaleTabMaterialBinding = MaterialBinding { value OVERALL }
+    scaleTabNormalBinding = NormalBinding { value OVERALL }
+    scaleTabNormal = Normal { vector 0 0 1 }
+    edgeScaleCoords EdgeScaleCoords
+    edgeScaleTab0 = IndexedFaceSet { coordIndex [ 0, 1, 2, 3, -1 ] normalIndex 0 materialIndex 0 }
+    edgeScaleTab1 = IndexedFaceSet { coordIndex [ 4, 5, 6, 7, -1 ] normalIndex 0 materialIndex 0 }
+    edgeScaleTab2 = IndexedFaceSet { coordIndex [ 8, 9, 10, 11, -1 ] normalIndex 0 materialIndex 0 }
+    edgeScaleTab3 = IndexedFaceSet { coordIndex [ 12, 13, 14, 15, -1 ] normalIndex 0 materialIndex 0 }
+    cornerScaleCoords CornerScaleCoords
+    cornerScaleTab0 = IndexedFaceSet { coordIndex [ 0, 1, 2, 3, -1 ] normalIndex 0 materialIndex 0 }
+    cornerScaleTab1 = IndexedFaceSet { coordIndex [ 4, 5, 6, 7, -1 ] normalIndex 0 materialIndex 0 }
+    cornerScaleTab2 = IndexedFaceSet { coordIndex [ 8, 9, 10, 11, -1 ] normalIndex 0 materialIndex 0 }
+    cornerScaleTab3 = IndexedFaceSet { coordIndex [ 12, 13, 14, 15, -1 ] normalIndex 0 materialIndex 0 }
 
 [TabBoxDragger tabBoxDragger.iv readValuesIgnored]
 topSeparator Separator
@@ -596,6 +598,10 @@ DraggerPart parsePart(const std::string& line, std::size_t& depth) {
         part.kind = Kind::RotationInverse;
     } else if (kind == "BeamScale") {
         part.kind = Kind::BeamScale;
+    } else if (kind == "EdgeScaleCoords") {
+        part.kind = Kind::EdgeScaleCoords;
+    } else if (kind == "CornerScaleCoords") {
+        part.kind = Kind::CornerScaleCoords;
     } else if (kind == "-") {
         part.kind = Kind::Null;
     } else if (kind == "=") {

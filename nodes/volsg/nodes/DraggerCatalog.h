@@ -11,17 +11,19 @@ namespace volsg {
 /// One part of a dragger's catalog.
 struct DraggerPart {
     enum class Kind {
-        Separator,       ///< a container: a Separator of its own per dragger
-        Group,           ///< a container: a Group
-        Switch,          ///< a container: a Switch showing `switchValue` at rest
-        Motion,          ///< the motion matrix (motionMatrix)
-        Null,            ///< no node unless the file sets the part
-        Resource,        ///< the node named `value` in the type's resource file
-        ChildDragger,    ///< a dragger of type `value`, at rest
-        Inline,          ///< the node that the Inventor text `value` describes
-        CenterMatrix,    ///< a MatrixTransform translating by the `center` field (Centerball)
-        RotationInverse, ///< a Rotation undoing the motion matrix's (light draggers)
-        BeamScale,       ///< a Scale of tan(angle) in x and y (SpotLightDragger's beamScale)
+        Separator,         ///< a container: a Separator of its own per dragger
+        Group,             ///< a container: a Group
+        Switch,            ///< a container: a Switch showing `switchValue` at rest
+        Motion,            ///< the motion matrix (motionMatrix)
+        Null,              ///< no node unless the file sets the part
+        Resource,          ///< the node named `value` in the type's resource file
+        ChildDragger,      ///< a dragger of type `value`, at rest
+        Inline,            ///< the node that the Inventor text `value` describes
+        CenterMatrix,      ///< a MatrixTransform translating by the `center` field (Centerball)
+        RotationInverse,   ///< a Rotation undoing the motion matrix's (light draggers)
+        BeamScale,         ///< a Scale of tan(angle) in x and y (SpotLightDragger's beamScale)
+        EdgeScaleCoords,   ///< a TabPlaneDragger's edge tabs' corners (Coordinate3)
+        CornerScaleCoords, ///< its corner tabs' corners
     };
     std::string name;
     Kind kind = Kind::Null;
