@@ -1,6 +1,6 @@
 #pragma once
 // Inventor's draggers (SoDragger's 21 subclasses in Coin 4: Translate1Dragger, TrackballDragger,
-// TransformBoxDragger, ...; docs/SCENE-FORMAT.md section 2.7), drawn at rest as Coin draws
+// TransformBoxDragger, ...; docs/SCENE-FORMAT.md section 2.9), drawn at rest as Coin draws
 // them. One class serves every dragger type: a type is a NodeType of its own (its name, parent
 // Dragger, a factory) and a catalog (DraggerCatalogs.cpp) that lists the dragger's parts in
 // the order of Coin's catalog tree, which container holds each, the child a Switch shows at
