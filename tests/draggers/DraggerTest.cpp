@@ -23,6 +23,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -228,4 +229,27 @@ TEST_CASE("Translate1Dragger: translation 2 0 0 moves its silhouette 2 x 10 pixe
     CHECK(std::abs(a.w - 52) <= 1);
     // Moved by exactly 20 pixels: the same pixels, shifted.
     CHECK(b == a + glm::ivec4(20, 0, 20, 0));
+}
+
+TEST_CASE("non-finite values: a dragger's box and pick stay bounded, nothing hangs") {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    for (const char* type : {"Translate1Dragger", "TrackballDragger", "TransformBoxDragger",
+                             "CenterballDragger", "SpotLightDragger", "TabBoxDragger"}) {
+        for (const float bad : {nan, inf}) {
+            CAPTURE(type);
+            ref_ptr<Dragger> d = Dragger::createOfType(type);
+            REQUIRE(d);
+            for (const char* name : {"translation", "scaleFactor", "center"})
+                if (auto* f = dynamic_cast<SFVec3f*>(d->field(name)))
+                    f->setValue(glm::vec3(bad, 1.0f, 0.0f));
+            if (auto* f = dynamic_cast<SFRotation*>(d->field("rotation")))
+                f->setValue(Rotation{glm::vec3(bad, 0.0f, 1.0f), bad});
+            if (auto* f = dynamic_cast<SFFloat*>(d->field("angle"))) f->setValue(bad);
+            CHECK_NOTHROW(computeBoundingBox(*d));
+            PickAction pick;
+            pick.setRay({{0.0, 0.0, 10.0}, {0.0, 0.0, -1.0}});
+            CHECK_NOTHROW(pick.apply(*d));
+        }
+    }
 }
