@@ -150,6 +150,15 @@ TEST_CASE("DrawStyle LINES draws a cube's and a face set's polygon edges, not th
     }
 }
 
+TEST_CASE("of two shapes at the same depth the later one shows, as Coin's GL_LEQUAL") {
+    Offscreen gl;
+    const std::string square = "Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] }\n"
+                               "IndexedFaceSet { coordIndex [ 0, 1, 2, 3, -1 ] }\n";
+    const Image image =
+        renderText(gl, kCamera + emissive("1 0 0") + square + emissive("0 1 0") + square);
+    CHECK(colorAt(image, 0.0, 0.0) == kGreen);
+}
+
 TEST_CASE("Rotation and RotationXYZ turn a 2 x 1 box's silhouette into 1 x 2") {
     Offscreen gl;
     const std::string box = emissive("0 1 0") + "Cube { width 2 height 1 depth 0.5 }\n";

@@ -237,6 +237,9 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
     const bool points = item.style == ShapeLook::Style::Points || gpu.mode == GL_POINTS;
     if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled && !drawsOutline(item))
         glPolygonMode(GL_FRONT_AND_BACK, lines ? GL_LINE : GL_POINT);
+    // Coin draws with GL_LEQUAL (SoDepthBufferElement): of two faces sharing an edge drawn as
+    // lines, the later one shows.
+    glDepthFunc(GL_LEQUAL);
     if (item.lineWidth != 1.0f) glLineWidth(item.lineWidth);
     if (points && item.pointSize != 1.0f) glPointSize(item.pointSize);
     if (item.cull) {
@@ -275,6 +278,7 @@ void ShapeRenderer::restoreState(const DrawItem& item) {
     }
     if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled && !drawsOutline(item))
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDepthFunc(GL_LESS); // the passes' default
     if (item.lineWidth != 1.0f) glLineWidth(1.0f);
     if (points && item.pointSize != 1.0f) glPointSize(1.0f);
 }
