@@ -2,12 +2,15 @@
 // Inventor's draggers (SoDragger's 21 subclasses in Coin 4: Translate1Dragger, TrackballDragger,
 // TransformBoxDragger, ...; docs/SCENE-FORMAT.md section 2.9), drawn at rest as Coin draws
 // them. One class serves every dragger type: a type is a NodeType of its own (its name, parent
-// Dragger, a factory) and a catalog (DraggerCatalogs.cpp) that lists the dragger's parts in
+// Dragger, a factory) and a catalog (DraggerCatalog.cpp) that lists the dragger's parts in
 // the order of Coin's catalog tree, which container holds each, the child a Switch shows at
 // rest, and the default of each part: a node named in Coin's resource file for the type
 // (draggerDefaults/, parsed with our reader at first use), a child dragger, or a node given in
 // the catalog. The fields are those of the reader's table of Inventor types
-// (io/InventorTypes.cpp), so a dragger keeps, reads and writes every field as before.
+// (io/InventorTypes.cpp), so a dragger keeps, reads and writes every field as before: it is an
+// UnknownNode of a known type (fields made per instance, written under the type's name with no
+// description); UnknownNode answers fieldCount/fieldAt, so the NodeType's own field table is
+// never used.
 //
 // At rest a dragger draws its inactive parts placed by its motion matrix, which its value
 // fields (translation, rotation, scaleFactor, scaleOrientation, center) make as Coin's
