@@ -253,3 +253,23 @@ TEST_CASE("non-finite values: a dragger's box and pick stay bounded, nothing han
         }
     }
 }
+
+TEST_CASE("a dragger's parts see Coin's dragger state: solid faces, back faces culled") {
+    // A square seen from its back (clockwise from the camera), drawn as lines: outside a
+    // dragger every edge shows; as a dragger's part, Coin's SoDragger::updateElements makes
+    // faces SOLID and COUNTERCLOCKWISE, so the back face is culled, its edges too.
+    Offscreen gl;
+    RenderOptions options;
+    options.width = options.height = 100;
+    const std::string camera =
+        "OrthographicCamera { position 0 0 5 height 10 nearDistance 1 farDistance 20 }\n";
+    const std::string square = "Separator { DrawStyle { style LINES } "
+                               "Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] } "
+                               "IndexedFaceSet { coordIndex [ 0, 3, 2, 1, -1 ] } }";
+    const Image plain = gl.renderer.render(*read("Separator { " + camera + square + " }"), options);
+    CHECK(coveredRect(plain).z >= 0);
+    const Image inDragger = gl.renderer.render(
+        *read("Separator { " + camera + "Translate1Dragger { translator " + square + " } }"),
+        options);
+    CHECK(coveredRect(inDragger).z < 0);
+}

@@ -60,8 +60,7 @@ void ShapeRenderer::batch(const GpuMesh& gpu, const ShapeLook& look) {
     key.lineWidth = look.lineWidth;
     key.pointSize = look.pointSize;
     key.lit = lit;
-    key.cull =
-        look.cullBackFaces && gpu.mode == GL_TRIANGLES && look.style == ShapeLook::Style::Filled;
+    key.cull = cullsBackFaces(gpu, look);
     const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
     key.frontClockwise = look.clockwise != mirrored;
     key.twoSided = look.twoSidedLighting;

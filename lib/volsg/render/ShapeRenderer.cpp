@@ -23,15 +23,20 @@ glm::mat3 normalMatrixOf(const glm::dmat4& model) {
 
 ShapeRenderer::Locations ShapeRenderer::locate(const Program& p) const {
     auto at = [&p](const char* name) { return p.uniformLocation(name); };
-    return {at("uModel"),         at("uNormalMatrix"),  at("uViewProjection"),
-            at("uView"),          at("uTextureMatrix"), at("uLit"),
-            at("uHasNormals"),    at("uHasColors"),     at("uEmissive"),
-            at("uAmbient"),       at("uDiffuse"),       at("uSpecular"),
-            at("uShininess"),     at("uAlpha"),         at("uViewer"),
-            at("uSpot"),          at("uSpotExponent"),  at("uAttenuation"),
-            at("uTextureModel"),  at("uSphereMap"),     at("uTexture"),
-            at("uBlendColor"),    at("uFogType"),       at("uFogColor"),
-            at("uFogVisibility"), at("uTwoSided"),      SurfaceScope::Locations::of(p)};
+    return {at("uModel"),          at("uNormalMatrix"),
+            at("uViewProjection"), at("uView"),
+            at("uTextureMatrix"),  at("uLit"),
+            at("uHasNormals"),     at("uHasColors"),
+            at("uEmissive"),       at("uAmbient"),
+            at("uDiffuse"),        at("uSpecular"),
+            at("uShininess"),      at("uAlpha"),
+            at("uViewer"),         at("uSpot"),
+            at("uSpotExponent"),   at("uAttenuation"),
+            at("uTextureModel"),   at("uSphereMap"),
+            at("uTexture"),        at("uBlendColor"),
+            at("uFogType"),        at("uFogColor"),
+            at("uFogVisibility"),  at("uTwoSided"),
+            at("uCullByNormal"),   SurfaceScope::Locations::of(p)};
 }
 
 ShapeRenderer::ShapeRenderer() {
@@ -137,8 +142,7 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
     item.style = look.style;
     item.lineWidth = look.lineWidth > 0.0f ? look.lineWidth : 1.0f;
     item.pointSize = look.pointSize > 0.0f ? look.pointSize : 1.0f;
-    item.cull =
-        look.cullBackFaces && gpu.mode == GL_TRIANGLES && look.style == ShapeLook::Style::Filled;
+    item.cull = cullsBackFaces(gpu, look);
     // A mirroring model matrix turns the winding around.
     const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
     item.frontClockwise = look.clockwise != mirrored;
@@ -242,11 +246,23 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
     glDepthFunc(GL_LEQUAL);
     if (item.lineWidth != 1.0f) glLineWidth(item.lineWidth);
     if (points && item.pointSize != 1.0f) glPointSize(item.pointSize);
-    if (item.cull) {
+    // Back faces are culled in every polygon mode, as GL culls for Coin; the edges of an
+    // outline are lines, which GL does not cull: the shader drops a back face's by its normal.
+    const bool byNormal = item.cull && drawsOutline(item);
+    glUniform1i(at.cullByNormal, byNormal ? 1 : 0);
+    if (item.cull && !byNormal) {
         glEnable(GL_CULL_FACE);
         glCullFace(GL_BACK);
         glFrontFace(item.frontClockwise ? GL_CW : GL_CCW);
     }
+}
+
+bool ShapeRenderer::cullsBackFaces(const GpuMesh& gpu, const ShapeLook& look) {
+    // Polygons in any draw style (Coin culls in line and point mode too); an outline only with
+    // normals to tell a back face's edges by.
+    if (!look.cullBackFaces || gpu.mode != GL_TRIANGLES) return false;
+    const bool outline = look.style == ShapeLook::Style::Lines && gpu.outlineCount > 0;
+    return !outline || gpu.hasNormals;
 }
 
 bool ShapeRenderer::drawsOutline(const DrawItem& item) {
@@ -272,7 +288,7 @@ void ShapeRenderer::drawElements(const DrawItem& item, GLsizei instances) {
 void ShapeRenderer::restoreState(const DrawItem& item) {
     const GpuMesh& gpu = *item.mesh;
     const bool points = item.style == ShapeLook::Style::Points || gpu.mode == GL_POINTS;
-    if (item.cull) {
+    if (item.cull && !drawsOutline(item)) {
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
     }

@@ -179,7 +179,7 @@ private:
         GLint model, normalMatrix, viewProjection, view, textureMatrix, lit, hasNormals, hasColors,
             emissive, ambient, diffuse, specular, shininess, alpha, viewer, spot, spotExponent,
             attenuation, textureModel, sphereMap, texture, blendColor, fogType, fogColor,
-            fogVisibility, twoSided;
+            fogVisibility, twoSided, cullByNormal;
         SurfaceScope::Locations scope;
     };
 
@@ -229,6 +229,7 @@ private:
     /// under the LINES draw style when the mesh has them (Mesh::outline).
     static void drawElements(const DrawItem& item, GLsizei instances);
     static bool drawsOutline(const DrawItem& item);
+    static bool cullsBackFaces(const GpuMesh& gpu, const ShapeLook& look);
     void batch(const GpuMesh& gpu, const ShapeLook& look);
     int internScope(const ShapeLook& look, bool lit);
     Locations locate(const Program& program) const;

@@ -337,7 +337,36 @@ void Dragger::readDone(const ReadContext&) {
     if (catalog_ && catalog_->readValuesIgnored) readVersion_ = version();
 }
 
+namespace {
+
+/// The state a dragger's parts see, as Coin's SoDragger::updateElements sets it for rendering
+/// and picking: counter-clockwise solid convex faces (back faces culled), a crease angle of
+/// 0.5, Phong lighting, default bindings, no normals in scope, default complexity.
+Node& draggerElements() {
+    static const ref_ptr<Node> elements = inlineNode(
+        "Group { ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType SOLID faceType CONVEX "
+        "creaseAngle 0.5 } LightModel { model PHONG } MaterialBinding { value DEFAULT } "
+        "NormalBinding { value DEFAULT } Normal { vector [ ] } Complexity { } }");
+    return *elements;
+}
+
+/// The dragger's own scope (Coin pushes the state around its traversal).
+class StateScope {
+public:
+    explicit StateScope(State& state) : state_(state) { state_.push(); }
+    ~StateScope() { state_.pop(); }
+    StateScope(const StateScope&) = delete;
+    StateScope& operator=(const StateScope&) = delete;
+
+private:
+    State& state_;
+};
+
+} // namespace
+
 void Dragger::doAction(Action& action) {
+    const StateScope scope(action.state());
+    action.traverse(draggerElements());
     if (const auto* callbacks = dynamic_cast<const SFNode*>(findField("callbackList")))
         if (Node* node = callbacks->getValue(); node && !action.isTerminated())
             action.traverse(*node);
