@@ -129,6 +129,63 @@ TEST_CASE("Translation moves a cube's silhouette by translation x 20 pixels") {
     CHECK(coveredRect(moved) - coveredRect(still) == glm::ivec4(10, 15, 10, 15));
 }
 
+TEST_CASE("DrawStyle LINES draws a cube's and a face set's polygon edges, not their diagonals") {
+    // Coin draws cubes as quads and face sets as polygons: in line mode no triangulation
+    // diagonal shows. A 2 x 2 square seen straight on: its border is drawn, its centre (on the
+    // diagonal of both triangles) is not.
+    Offscreen gl;
+    for (const std::string& shape :
+         {std::string("Cube { width 2 height 2 depth 0 }\n"),
+          std::string("Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] }\n"
+                      "IndexedFaceSet { coordIndex [ 0, 1, 2, 3, -1 ] }\n")}) {
+        CAPTURE(shape);
+        const Image image =
+            renderText(gl, kCamera + emissive("0 1 0") + "DrawStyle { style LINES }\n" + shape);
+        // A line on a pixel boundary may fall on either side: 1 pixel of tolerance.
+        const glm::ivec4 border = coveredRect(image) - expectedRect(-1.0, -1.0, 1.0, 1.0);
+        CHECK(glm::all(glm::lessThanEqual(glm::abs(border), glm::ivec4(1))));
+        CHECK(colorAt(image, 0.0, 0.0) == glm::vec3(0.0f));
+        CHECK(colorAt(image, 0.5, 0.5) == glm::vec3(0.0f));
+        CHECK(colorAt(image, -0.5, -0.5) == glm::vec3(0.0f));
+    }
+}
+
+TEST_CASE("of two shapes at the same depth the later one shows, as Coin's GL_LEQUAL") {
+    Offscreen gl;
+    const std::string square = "Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] }\n"
+                               "IndexedFaceSet { coordIndex [ 0, 1, 2, 3, -1 ] }\n";
+    const Image image =
+        renderText(gl, kCamera + emissive("1 0 0") + square + emissive("0 1 0") + square);
+    CHECK(colorAt(image, 0.0, 0.0) == kGreen);
+}
+
+TEST_CASE("SOLID counter-clockwise faces are culled from behind in LINES style too, as in Coin") {
+    Offscreen gl;
+    const std::string hints = "ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType SOLID "
+                              "}\nDrawStyle { style LINES }\n";
+    const std::string coords = "Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] }\n";
+    // Facing the camera: its edges are drawn. From behind: nothing.
+    const Image front = renderText(gl, kCamera + emissive("0 1 0") + hints + coords +
+                                           "IndexedFaceSet { coordIndex [ 0, 1, 2, 3, -1 ] }\n");
+    const Image back = renderText(gl, kCamera + emissive("0 1 0") + hints + coords +
+                                          "IndexedFaceSet { coordIndex [ 0, 3, 2, 1, -1 ] }\n");
+    CHECK(coveredRect(front).x >= 0);
+    CHECK(coveredRect(back).x < 0);
+    // A Sphere drawn as lines (GL's line mode, no outline) loses its back half's edges: fewer
+    // covered pixels than without the hints.
+    const auto count = [](const Image& image) {
+        int n = 0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                n += glm::vec3(image.at(x, y)) != glm::vec3(0.0f);
+        return n;
+    };
+    const Image culled = renderText(gl, kCamera + emissive("0 1 0") + hints + "Sphere { }\n");
+    const Image all =
+        renderText(gl, kCamera + emissive("0 1 0") + "DrawStyle { style LINES }\nSphere { }\n");
+    CHECK(count(culled) < count(all));
+}
+
 TEST_CASE("Rotation and RotationXYZ turn a 2 x 1 box's silhouette into 1 x 2") {
     Offscreen gl;
     const std::string box = emissive("0 1 0") + "Cube { width 2 height 1 depth 0.5 }\n";

@@ -505,7 +505,9 @@ TEST_CASE("vertex colours replace the diffuse colour") {
     CHECK(std::abs(p.b - 0.3f) <= 1e-5f);
 }
 
-TEST_CASE("an IndexedLineSet is drawn unlit in emissive plus diffuse") {
+TEST_CASE("an IndexedLineSet without normals is drawn unlit in its diffuse colour, as Coin") {
+    // Coin draws a line set without normals in its BASE_COLOR light model (lighting off): the
+    // diffuse colour alone, the emissive colour ignored (seen in Coin's images of draggers).
     Offscreen gl;
     auto root = Separator::create();
     root->addChild(orthoCamera(4.0f));
@@ -525,9 +527,9 @@ TEST_CASE("an IndexedLineSet is drawn unlit in emissive plus diffuse") {
     options.height = 20;
     const Image image = gl.renderer.render(*root, options);
     const glm::vec4 p = image.at(10, 10);
-    CHECK(std::abs(p.r - 0.3f) <= 1e-5f);
-    CHECK(std::abs(p.g - 0.4f) <= 1e-5f);
-    CHECK(std::abs(p.b - 0.6f) <= 1e-5f);
+    CHECK(std::abs(p.r - 0.2f) <= 1e-5f);
+    CHECK(std::abs(p.g - 0.3f) <= 1e-5f);
+    CHECK(std::abs(p.b - 0.1f) <= 1e-5f);
     CHECK(isBackground(image, {10, 5}));
 }
 

@@ -19,6 +19,10 @@ struct Mesh {
     std::vector<glm::vec4> colors;      ///< optional, one per position (overrides diffuse)
     std::vector<glm::vec2> texCoords;   ///< optional, one per position
     std::vector<std::uint32_t> indices; ///< 3 per triangle, 2 per line segment, 1 per point
+    /// Triangles only, optional: 2 per edge, the edges the LINES draw style shows, as Coin
+    /// draws polygons in line mode (a face set's polygons and a cube's or a cylinder's quads
+    /// without the diagonals of their triangulation). Empty: every triangle's edges.
+    std::vector<std::uint32_t> outline;
 
     Box3 bounds() const {
         Box3 b;

@@ -25,6 +25,22 @@ void addTriangle(Mesh& m, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     m.indices.insert(m.indices.end(), {a, b, c});
 }
 
+/// Two triangles, and the quad's four edges as its outline (Coin draws cubes and cylinder
+/// sides as GL quads: no diagonal in line mode).
+void addQuad(Mesh& m, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    addTriangle(m, a, b, c);
+    addTriangle(m, a, c, d);
+    m.outline.insert(m.outline.end(), {a, b, b, c, c, d, d, a});
+}
+
+/// The edges of the triangles from index `first` on, as outline (Coin's triangle fans).
+void outlineTriangles(Mesh& m, std::size_t first) {
+    for (std::size_t i = first; i + 2 < m.indices.size(); i += 3) {
+        const std::uint32_t a = m.indices[i], b = m.indices[i + 1], c = m.indices[i + 2];
+        m.outline.insert(m.outline.end(), {a, b, b, c, c, a});
+    }
+}
+
 /// Unit directions around +Y: index j at angle 2*pi*j/slices from the back (-Z), turning
 /// counter-clockwise seen from +Y (towards -X), as Inventor's texture s runs. The last entry
 /// repeats the first exactly, so rings close without a crack (with s = 1 there).
@@ -98,8 +114,7 @@ void buildBoxMesh(const glm::vec3& size, Mesh& out, PartStarts* faces) {
         for (int k = 0; k < 4; ++k)
             addVertex(out, (f.n + su[k] * f.u + sv[k] * f.v) * half, f.n,
                       {0.5 + 0.5 * su[k], 0.5 + 0.5 * sv[k]});
-        addTriangle(out, base, base + 1, base + 2);
-        addTriangle(out, base, base + 2, base + 3);
+        addQuad(out, base, base + 1, base + 2, base + 3);
     }
 }
 
@@ -190,18 +205,20 @@ void buildCylinderMesh(float radius, float height, bool sides, bool top, bool bo
         for (std::size_t j = 0; j < dirs.size(); ++j)
             addVertex(out, r * dirs[j] + glm::dvec3(0.0, y1, 0.0), dirs[j],
                       {ringS(j, dirs.size()), 1.0});
-        for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(slices); ++j) {
-            addTriangle(out, lower + j, lower + j + 1, upper + j + 1);
-            addTriangle(out, lower + j, upper + j + 1, upper + j);
-        }
+        for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(slices); ++j)
+            addQuad(out, lower + j, lower + j + 1, upper + j + 1, upper + j);
     }
     if (top) {
         startPart(out, parts);
+        const std::size_t first = out.indices.size();
         addDisk(out, dirs, r, y1, true);
+        outlineTriangles(out, first);
     }
     if (bottom) {
         startPart(out, parts);
+        const std::size_t first = out.indices.size();
         addDisk(out, dirs, r, y0, false);
+        outlineTriangles(out, first);
     }
 }
 

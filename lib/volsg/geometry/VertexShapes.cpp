@@ -534,6 +534,9 @@ void buildVertexShapeMesh(const ShapeTopology& t, const VertexAttributes& a, Mes
         switch (t.primitive) {
         case Mesh::Primitive::Triangles:
             triangulate(t, a, f, faceNormals[fi], first, out);
+            // The polygon's own edges, as Coin draws a face in line mode.
+            for (std::uint32_t c = 0; c < corners; ++c)
+                out.outline.insert(out.outline.end(), {first + c, first + (c + 1) % corners});
             break;
         case Mesh::Primitive::Lines:
             for (std::uint32_t c = 0; c + 1 < corners; ++c)

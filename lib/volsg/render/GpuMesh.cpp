@@ -8,10 +8,11 @@ namespace volsg {
 
 void GpuMesh::upload(const Mesh& mesh) {
     const std::size_t vertexCount = mesh.positions.size();
-    for (std::uint32_t i : mesh.indices)
-        if (i >= vertexCount)
-            throw Error("mesh index " + std::to_string(i) + " is beyond its " +
-                        std::to_string(vertexCount) + " positions");
+    for (const auto* list : {&mesh.indices, &mesh.outline})
+        for (std::uint32_t i : *list)
+            if (i >= vertexCount)
+                throw Error("mesh index " + std::to_string(i) + " is beyond its " +
+                            std::to_string(vertexCount) + " positions");
 
     const bool triangles = mesh.primitive == Mesh::Primitive::Triangles;
     mode = triangles                                  ? GL_TRIANGLES
@@ -20,6 +21,7 @@ void GpuMesh::upload(const Mesh& mesh) {
     const std::size_t perPrimitive = mesh.verticesPerPrimitive();
     // A trailing partial primitive would be ignored by GL anyway; leave it out explicitly.
     indexCount = GLsizei(mesh.indices.size() - mesh.indices.size() % perPrimitive);
+    outlineCount = triangles ? GLsizei(mesh.outline.size() - mesh.outline.size() % 2) : 0;
     hasNormals = !mesh.normals.empty() && mesh.normals.size() == vertexCount;
     hasTexCoords = !mesh.texCoords.empty() && mesh.texCoords.size() == vertexCount;
     hasColors = !mesh.colors.empty() && mesh.colors.size() == vertexCount;
@@ -58,7 +60,13 @@ void GpuMesh::upload(const Mesh& mesh) {
     }
     // The element buffer binding is VAO state: bind it while the VAO is bound.
     vertexArray.setIndexBuffer(indices);
-    indices.setData(mesh.indices);
+    if (outlineCount > 0) {
+        std::vector<std::uint32_t> all(mesh.indices.begin(), mesh.indices.begin() + indexCount);
+        all.insert(all.end(), mesh.outline.begin(), mesh.outline.begin() + outlineCount);
+        indices.setData(all);
+    } else {
+        indices.setData(mesh.indices);
+    }
     VertexArray::unbind();
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     uploaded = true;

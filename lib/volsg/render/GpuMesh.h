@@ -20,6 +20,8 @@ struct GpuMesh {
     VertexArray vertexArray;
     Buffer positions, normals, colors, texCoords, indices;
     GLsizei indexCount = 0;
+    /// Mesh::outline, after the primitives in the index buffer (2 per edge; 0: none).
+    GLsizei outlineCount = 0;
     GLenum mode = GL_TRIANGLES;
     bool hasNormals = false;           ///< one normal per position
     bool hasColors = false;            ///< one colour per position (replaces the diffuse colour)

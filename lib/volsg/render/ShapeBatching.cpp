@@ -60,8 +60,7 @@ void ShapeRenderer::batch(const GpuMesh& gpu, const ShapeLook& look) {
     key.lineWidth = look.lineWidth;
     key.pointSize = look.pointSize;
     key.lit = lit;
-    key.cull =
-        look.cullBackFaces && gpu.mode == GL_TRIANGLES && look.style == ShapeLook::Style::Filled;
+    key.cull = cullsBackFaces(gpu, look);
     const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
     key.frontClockwise = look.clockwise != mirrored;
     key.twoSided = look.twoSidedLighting;
@@ -99,7 +98,9 @@ void ShapeRenderer::batch(const GpuMesh& gpu, const ShapeLook& look) {
     out.instance.model = glm::mat4(look.model);
     float shininess = m.shininess * 128.0f;
     glm::vec3 emissive = m.emissive;
-    if (look.baseColorOnly) emissive = glm::vec3(0.0f);
+    // Unlit (BASE_COLOR, or lines and points without normals: fill()): diffuse alone.
+    if (look.baseColorOnly || !(gpu.mode == GL_TRIANGLES || gpu.hasNormals))
+        emissive = glm::vec3(0.0f);
     out.instance.emissiveShininess = glm::vec4(emissive, shininess);
     out.instance.ambient = glm::vec4(m.ambient * look.environment.ambient, 0.0f);
     out.instance.diffuseAlpha = glm::vec4(m.diffuse, 1.0f - m.transparency);
@@ -148,8 +149,7 @@ void ShapeRenderer::flushOpaque() {
                                   reinterpret_cast<const void*>(base + offset));
             glVertexAttribDivisor(8 + k, 1);
         }
-        glDrawElementsInstanced(gpu.mode, gpu.indexCount, GL_UNSIGNED_INT, nullptr,
-                                GLsizei(ranges[g].second));
+        drawElements(item, GLsizei(ranges[g].second));
         restoreState(item);
         ++drawsLastFrame_;
     }

@@ -23,15 +23,20 @@ glm::mat3 normalMatrixOf(const glm::dmat4& model) {
 
 ShapeRenderer::Locations ShapeRenderer::locate(const Program& p) const {
     auto at = [&p](const char* name) { return p.uniformLocation(name); };
-    return {at("uModel"),         at("uNormalMatrix"),  at("uViewProjection"),
-            at("uView"),          at("uTextureMatrix"), at("uLit"),
-            at("uHasNormals"),    at("uHasColors"),     at("uEmissive"),
-            at("uAmbient"),       at("uDiffuse"),       at("uSpecular"),
-            at("uShininess"),     at("uAlpha"),         at("uViewer"),
-            at("uSpot"),          at("uSpotExponent"),  at("uAttenuation"),
-            at("uTextureModel"),  at("uSphereMap"),     at("uTexture"),
-            at("uBlendColor"),    at("uFogType"),       at("uFogColor"),
-            at("uFogVisibility"), at("uTwoSided"),      SurfaceScope::Locations::of(p)};
+    return {at("uModel"),          at("uNormalMatrix"),
+            at("uViewProjection"), at("uView"),
+            at("uTextureMatrix"),  at("uLit"),
+            at("uHasNormals"),     at("uHasColors"),
+            at("uEmissive"),       at("uAmbient"),
+            at("uDiffuse"),        at("uSpecular"),
+            at("uShininess"),      at("uAlpha"),
+            at("uViewer"),         at("uSpot"),
+            at("uSpotExponent"),   at("uAttenuation"),
+            at("uTextureModel"),   at("uSphereMap"),
+            at("uTexture"),        at("uBlendColor"),
+            at("uFogType"),        at("uFogColor"),
+            at("uFogVisibility"),  at("uTwoSided"),
+            at("uCullByNormal"),   SurfaceScope::Locations::of(p)};
 }
 
 ShapeRenderer::ShapeRenderer() {
@@ -127,17 +132,17 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
     item.specular = m.specular;
     item.shininess = m.shininess * 128.0f;
     item.alpha = 1.0f - m.transparency;
-    // Lines and points are lit only with normals of their own.
+    // Lines and points are lit only with normals of their own; without, Coin draws them in
+    // its BASE_COLOR light model (SoIndexedLineSet, SoPointSet): the diffuse colour alone.
     item.lit = gpu.mode == GL_TRIANGLES || gpu.hasNormals;
-    if (look.baseColorOnly) {
+    if (look.baseColorOnly || !item.lit) {
         item.lit = false;
         item.emissive = glm::vec3(0.0f);
     }
     item.style = look.style;
     item.lineWidth = look.lineWidth > 0.0f ? look.lineWidth : 1.0f;
     item.pointSize = look.pointSize > 0.0f ? look.pointSize : 1.0f;
-    item.cull =
-        look.cullBackFaces && gpu.mode == GL_TRIANGLES && look.style == ShapeLook::Style::Filled;
+    item.cull = cullsBackFaces(gpu, look);
     // A mirroring model matrix turns the winding around.
     const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
     item.frontClockwise = look.clockwise != mirrored;
@@ -180,7 +185,7 @@ void ShapeRenderer::draw(const DrawItem& item) {
     program_.use();
     applyState(loc_, item, true);
     gpu.vertexArray.bind();
-    glDrawElements(gpu.mode, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+    drawElements(item, 1);
     restoreState(item);
     ++drawsLastFrame_;
 }
@@ -234,26 +239,62 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
     // filled polygons, one-pixel lines and no culling.
     const bool lines = item.style == ShapeLook::Style::Lines;
     const bool points = item.style == ShapeLook::Style::Points || gpu.mode == GL_POINTS;
-    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled)
+    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled && !drawsOutline(item))
         glPolygonMode(GL_FRONT_AND_BACK, lines ? GL_LINE : GL_POINT);
+    // Coin draws with GL_LEQUAL (SoDepthBufferElement): of two faces sharing an edge drawn as
+    // lines, the later one shows.
+    glDepthFunc(GL_LEQUAL);
     if (item.lineWidth != 1.0f) glLineWidth(item.lineWidth);
     if (points && item.pointSize != 1.0f) glPointSize(item.pointSize);
-    if (item.cull) {
+    // Back faces are culled in every polygon mode, as GL culls for Coin; the edges of an
+    // outline are lines, which GL does not cull: the shader drops a back face's by its normal.
+    const bool byNormal = item.cull && drawsOutline(item);
+    glUniform1i(at.cullByNormal, byNormal ? 1 : 0);
+    if (item.cull && !byNormal) {
         glEnable(GL_CULL_FACE);
         glCullFace(GL_BACK);
         glFrontFace(item.frontClockwise ? GL_CW : GL_CCW);
     }
 }
 
+bool ShapeRenderer::cullsBackFaces(const GpuMesh& gpu, const ShapeLook& look) {
+    // Polygons in any draw style (Coin culls in line and point mode too); an outline only with
+    // normals to tell a back face's edges by.
+    if (!look.cullBackFaces || gpu.mode != GL_TRIANGLES) return false;
+    const bool outline = look.style == ShapeLook::Style::Lines && gpu.outlineCount > 0;
+    return !outline || gpu.hasNormals;
+}
+
+bool ShapeRenderer::drawsOutline(const DrawItem& item) {
+    return item.style == ShapeLook::Style::Lines && item.mesh->mode == GL_TRIANGLES &&
+           item.mesh->outlineCount > 0;
+}
+
+void ShapeRenderer::drawElements(const DrawItem& item, GLsizei instances) {
+    const GpuMesh& gpu = *item.mesh;
+    // The LINES style of polygons with an outline: its edges, after the triangles.
+    const bool outline = drawsOutline(item);
+    const GLenum mode = outline ? GL_LINES : gpu.mode;
+    const GLsizei count = outline ? gpu.outlineCount : gpu.indexCount;
+    const void* first =
+        outline ? reinterpret_cast<const void*>(std::size_t(gpu.indexCount) * sizeof(std::uint32_t))
+                : nullptr;
+    if (instances == 1)
+        glDrawElements(mode, count, GL_UNSIGNED_INT, first);
+    else
+        glDrawElementsInstanced(mode, count, GL_UNSIGNED_INT, first, instances);
+}
+
 void ShapeRenderer::restoreState(const DrawItem& item) {
     const GpuMesh& gpu = *item.mesh;
     const bool points = item.style == ShapeLook::Style::Points || gpu.mode == GL_POINTS;
-    if (item.cull) {
+    if (item.cull && !drawsOutline(item)) {
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
     }
-    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled)
+    if (gpu.mode == GL_TRIANGLES && item.style != ShapeLook::Style::Filled && !drawsOutline(item))
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDepthFunc(GL_LESS); // the passes' default
     if (item.lineWidth != 1.0f) glLineWidth(1.0f);
     if (points && item.pointSize != 1.0f) glPointSize(1.0f);
 }

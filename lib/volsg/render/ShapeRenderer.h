@@ -88,7 +88,8 @@ struct ShapeLook {
 /// then the texture by its model, then fog; strength is 1 for directional lights, the
 /// environment's attenuation and the cone for point and spot lights. Vertex colours replace
 /// the diffuse colour, N is flipped towards the viewer under two-sided lighting, and H is the half
-/// vector to the viewer. Lines and points without normals are unlit: emissive + diffuse.
+/// vector to the viewer. Lines and points without normals are unlit, as Coin draws them (its
+/// BASE_COLOR light model): the diffuse (or vertex) colour alone.
 class ShapeRenderer {
 public:
     static constexpr int kMaxLights = kMaxSurfaceLights;
@@ -178,7 +179,7 @@ private:
         GLint model, normalMatrix, viewProjection, view, textureMatrix, lit, hasNormals, hasColors,
             emissive, ambient, diffuse, specular, shininess, alpha, viewer, spot, spotExponent,
             attenuation, textureModel, sphereMap, texture, blendColor, fogType, fogColor,
-            fogVisibility, twoSided;
+            fogVisibility, twoSided, cullByNormal;
         SurfaceScope::Locations scope;
     };
 
@@ -224,6 +225,11 @@ private:
     void applyState(const Locations& at, const DrawItem& item, bool withMaterial);
     /// Undoes what applyState changed beyond uniforms (culling, polygon mode, widths).
     void restoreState(const DrawItem& item);
+    /// Draws the item's mesh (`instances` of it): its primitives, or its polygon outlines
+    /// under the LINES draw style when the mesh has them (Mesh::outline).
+    static void drawElements(const DrawItem& item, GLsizei instances);
+    static bool drawsOutline(const DrawItem& item);
+    static bool cullsBackFaces(const GpuMesh& gpu, const ShapeLook& look);
     void batch(const GpuMesh& gpu, const ShapeLook& look);
     int internScope(const ShapeLook& look, bool lit);
     Locations locate(const Program& program) const;

@@ -45,10 +45,11 @@ inline constexpr const char* shapeFragment = R"GLSL(
 in vec2 vTexCoord;
 in float vEyeDistance;
 
-uniform bool uLit;        // false for lines and points without normals: emissive + diffuse
+uniform bool uLit;        // false for lines and points without normals: emissive (0 then) + diffuse
 uniform bool uHasNormals; // else flat normals from the screen-space derivatives
 uniform bool uHasColors;  // vertex colours replace the diffuse colour
 uniform bool uTwoSided;   // a face seen from behind is lit on that side (ShapeHints)
+uniform bool uCullByNormal; // polygon edges drawn as lines: drop a back face's (its normal)
 #ifdef INSTANCED
 flat in vec4 vEmissiveShininess;
 flat in vec3 vAmbient;
@@ -117,6 +118,7 @@ void main() {
     // Per-vertex colours carry their material's alpha (ShapeState's materialColor).
     float alpha = uHasColors ? vColor.a : uAlpha;
     vec3 V = towardsViewer();
+    if (uCullByNormal && dot(vWorldNormal, V) < 0.0) discard;
     vec3 N = uHasNormals ? vWorldNormal : vec3(0.0);
     bool derived = dot(N, N) <= 0.0;
     if (derived) N = cross(dFdx(vWorldPosition), dFdy(vWorldPosition));

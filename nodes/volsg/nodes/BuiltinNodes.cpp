@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include <volsg/nodes/Annotation.h>
+#include <volsg/nodes/AntiSquish.h>
 #include <volsg/nodes/AppearanceKit.h>
 #include <volsg/nodes/Array.h>
 #include <volsg/nodes/AsciiText.h>
@@ -20,6 +21,7 @@
 #include <volsg/nodes/Coordinate4.h>
 #include <volsg/nodes/Cube.h>
 #include <volsg/nodes/Cylinder.h>
+#include <volsg/nodes/Dragger.h>
 #include <volsg/nodes/DrawStyle.h>
 #include <volsg/nodes/Environment.h>
 #include <volsg/nodes/FaceSet.h>
@@ -185,6 +187,10 @@ void addBuiltinTypes(NodeRegistry& r) {
     r.add(IndexedNurbsCurve::classType());
     r.add(NurbsSurface::classType());
     r.add(IndexedNurbsSurface::classType());
+    // Inventor 2.1: draggers, drawn at rest, and the AntiSquish their geometry uses.
+    r.add(AntiSquish::classType());
+    for (const NodeType* dragger : Dragger::draggerTypes())
+        r.add(*dragger);
 }
 
 } // namespace
