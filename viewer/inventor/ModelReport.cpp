@@ -7,6 +7,8 @@
 #include <fstream>
 
 #include <volsg/core/Error.h>
+#include <volsg/fields/Fields.h>
+#include <volsg/io/ReaderSupport.h>
 #include <volsg/nodes/BuiltinNodes.h>
 
 namespace volsg::coincompare {
@@ -290,7 +292,7 @@ std::vector<std::string> nodeTypeNames(std::string_view text) {
 std::vector<std::string> typesVolsgLacks(const std::vector<std::string>& names) {
     std::vector<std::string> lacking;
     for (const std::string& name : names)
-        if (!volsg::nodeTypes().find(name)) lacking.push_back(name);
+        if (!volsg::reader::registry().find(name)) lacking.push_back(name);
     return lacking;
 }
 
