@@ -72,6 +72,24 @@ std::size_t pixelDataAt(const Bytes& b) {
     return 0;
 }
 
+/// What readVolume says of `bytes` written as the file `name` in a fresh folder ("" if it reads).
+std::string readError(const Bytes& bytes, const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      ("volsg-dicom-lengths-" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / name).string();
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    std::string message;
+    try {
+        (void)readVolume(path);
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    std::filesystem::remove_all(dir);
+    return message;
+}
+
 } // namespace
 
 TEST_CASE("a real slice passes, and its pixel data declared 4 GB long is refused with its offset") {
@@ -90,21 +108,9 @@ TEST_CASE("a real slice passes, and its pixel data declared 4 GB long is refused
                          std::to_string(b.size() - at - 12) + " are left in the file");
 
     // Through the reader: one line naming the file and the element, no allocation of 4 GB.
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                      ("volsg-dicom-lengths-" + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    const std::string path = (dir / "bad.dcm").string();
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
-    std::string message;
-    try {
-        (void)readVolume(path);
-    } catch (const Error& e) {
-        message = e.what();
-    }
+    const std::string message = readError(b, "bad.dcm");
     CHECK(message.find("bad.dcm: not a DICOM file: byte ") != std::string::npos);
     CHECK(message.find("(7fe0,0010) declares 4026531840 bytes") != std::string::npos);
-    std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("a slice cut anywhere inside an element is refused, cut between elements it passes") {
@@ -198,20 +204,8 @@ TEST_CASE("native pixel data shorter than the image is refused before GDCM decod
     b.resize(b.size() - 100);
     CHECK(dicomLengthProblem(b).empty());
 
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("volsg-dicom-short-" + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    const std::string path = (dir / "short.dcm").string();
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
-    std::string message;
-    try {
-        (void)readVolume(path);
-    } catch (const Error& e) {
-        message = e.what();
-    }
+    const std::string message = readError(b, "short.dcm");
     CAPTURE(message);
     CHECK(message.find("short.dcm: pixel data holds " + std::to_string(shorter) +
                        " bytes, expected " + std::to_string(length)) != std::string::npos);
-    std::filesystem::remove_all(dir);
 }
