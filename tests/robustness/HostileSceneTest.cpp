@@ -11,6 +11,7 @@
 #include <limits>
 #include <string>
 
+#include <volsg/actions/SearchAction.h>
 #include <volsg/context/OSMesaContext.h>
 #include <volsg/core/Error.h>
 #include <volsg/engines/AnimatedNodes.h>
@@ -18,6 +19,7 @@
 #include <volsg/fields/Fields.h>
 #include <volsg/image/Image.h>
 #include <volsg/io/SceneReader.h>
+#include <volsg/nodes/Volume.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/volumeio/VolumeReader.h>
 #include <volsg/volumescene/ReferenceScene.h>
@@ -358,4 +360,19 @@ TEST_CASE("a render-time message names its node once") {
     CAPTURE(o.gl);
     CHECK(o.gl.rfind("hostile.iv:4:8: Array 'N4' has 100000 x 100000 x 1 copies", 0) == 0);
     CHECK(o.gl.find("N4", o.gl.find("N4") + 2) == std::string::npos);
+}
+
+// Found by fuzz-scenegraph (slices path): samplesPerPlane -1960023714 was clamped for drawing
+// but not for the error model's choice, which then ran for minutes.
+TEST_CASE("a negative samplesPerPlane is clamped for the quality choice as for drawing") {
+    OSMesaContext context;
+    const ref_ptr<Node> root =
+        readSceneFromString(kHeader + "Separator {\n" + kOrtho + "\n" + kSphere +
+                                "DEF V Volume { samplesPerPlane -1960023714 }\n}\n",
+                            "hostile.iv");
+    const Outcome o = renderBoth(*root, false);
+    CHECK(o.gl.empty());
+    const auto* volume = dynamic_cast<const Volume*>(findByName(*root, "V"));
+    REQUIRE(volume);
+    CHECK(volume->slicingStats().samplesPerPlane == 1);
 }

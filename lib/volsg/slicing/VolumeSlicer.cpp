@@ -119,7 +119,9 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
     else if (settings.numPlanes > 0)
         request.numPlanes =
             frame.interactive ? std::max(1, (settings.numPlanes + 3) / 4) : settings.numPlanes;
-    if (settings.fixedSamplesPerPlane) request.samplesPerPlane = settings.samplesPerPlane;
+    // As the drawing clamps them (a negative count from a file made the model loop for ever).
+    if (settings.fixedSamplesPerPlane)
+        request.samplesPerPlane = std::clamp(settings.samplesPerPlane, 1, 256);
     if (settings.fixedPreIntegrated) request.preIntegrated = settings.preIntegrated;
     if (settings.fixedMipPeaks) request.peaks = settings.mipPeaks;
     request.refinePeaks = settings.refinePeaks;
