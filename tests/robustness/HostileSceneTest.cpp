@@ -32,6 +32,15 @@ const std::string kHeader = "#Inventor V2.1 ascii\n";
 const std::string kSphere =
     "VolumeData { generator SOFT_SPHERE dimensions 16 16 16 }\nTransferFunction { }\n";
 
+/// Separators S1..Sn, each USEing the one before twice: 2^n paths to what S0 holds.
+std::string doublingChain(int n) {
+    std::string text;
+    for (int i = 1; i <= n; ++i)
+        text += "DEF S" + std::to_string(i) + " Separator { USE S" + std::to_string(i - 1) +
+                " USE S" + std::to_string(i - 1) + " }\n";
+    return text;
+}
+
 std::string shearWarpScene(const std::string& before, const std::string& fields = "") {
     return kHeader + "Separator {\n" + before + "\n" + kSphere + "ShearWarpVolume { " + fields +
            " VolumeObject { } }\n}\n";
@@ -144,9 +153,7 @@ TEST_CASE("USE chains that multiply instances stop at the traversal's instance t
     OSMesaContext context;
     // 41 Separators, each USEing the one before twice: 2^40 paths to the cube.
     std::string text = kHeader + "Separator {\nDEF S0 Separator { Cube { } }\n";
-    for (int i = 1; i <= 40; ++i)
-        text += "DEF S" + std::to_string(i) + " Separator { USE S" + std::to_string(i - 1) +
-                " USE S" + std::to_string(i - 1) + " }\n";
+    text += doublingChain(40);
     text += "}\n";
     const Outcome o = renderBoth(text, false);
     CAPTURE(o.gl);
@@ -302,9 +309,7 @@ TEST_CASE("screen text is bounded as a frame total of characters") {
     std::string text = kHeader + "Separator {\n" + kOrtho +
                        "\nDEF S0 Separator { Text2 { string \"" + std::string(100000, 'W') +
                        "\" } }\n";
-    for (int i = 1; i <= 12; ++i)
-        text += "DEF S" + std::to_string(i) + " Separator { USE S" + std::to_string(i - 1) +
-                " USE S" + std::to_string(i - 1) + " }\n";
+    text += doublingChain(12);
     text += "}\n";
     const Outcome o = renderBoth(text, false);
     CAPTURE(o.gl);
