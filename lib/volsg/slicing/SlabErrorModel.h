@@ -74,6 +74,10 @@ public:
     /// The RMSE per channel (0..1 units) over the rays through the box along direction `dir`
     /// (nearestDirection) drawn with quadrature `q`, against the model. Cached.
     double rayRmse(int dir, const SlabQuadrature& q);
+    /// rayRmse(dir, q) if it is at most `limit`; otherwise some value above `limit` and at most
+    /// the RMSE, found after as few rays as prove it (the rays are visited in a stratified
+    /// order, so a quadrature far from the target is rejected after a small share of them).
+    double rayRmseUpTo(int dir, const SlabQuadrature& q, double limit);
     /// The same for shear-warp (ShearWarpVolume, DVR of transfer-function objects): the
     /// volume classified per voxel, resampled bilinearly in the voxel slices perpendicular to
     /// the principal axis, one sample per slice, every `sliceStep`-th slice with opacity
@@ -94,7 +98,12 @@ private:
     VolumeRenderMode mode_ = VolumeRenderMode::DVR;
     double L0_ = 1.0;
     bool tagged_ = false;
-    std::map<std::pair<int, SlabQuadrature>, double> cache_;
+    /// An exact RMSE, or a lower bound where an evaluation stopped early.
+    struct CachedRmse {
+        double value = 0.0;
+        bool exact = true;
+    };
+    std::map<std::pair<int, SlabQuadrature>, CachedRmse> cache_;
     std::map<std::pair<int, int>, double> preClassifiedCache_;
     int evaluations_ = 0;
 };

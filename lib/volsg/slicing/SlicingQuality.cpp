@@ -130,6 +130,11 @@ double quadratureCost(const SlabQuadrature& q, double depthL0, VolumeRenderMode 
 }
 
 double predictImageRmse(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q) {
+    return predictImageRmseUpTo(model, view, q, std::numeric_limits<double>::infinity());
+}
+
+double predictImageRmseUpTo(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q,
+                            double limit) {
     // A perspective view's rays spread: the model's wide ray sets spread alike (their slabs
     // stretch as the view's do); a narrow view stretches its slabs by the mean.
     const bool wide = view.coneTangent > 0.2;
@@ -141,7 +146,9 @@ double predictImageRmse(SlabErrorModel& model, const QualityView& view, const Sl
     if (stretched.samplesPerL0() > topRate)
         stretched.planeSpacingL0 = roundedSpacing(stretched.samplesPerPlane / topRate);
     const int dir = SlabErrorModel::nearestDirection(view.localDirection, wide);
-    return std::sqrt(std::clamp(view.coverage, 0.0, 1.0)) * model.rayRmse(dir, stretched);
+    const double scale = std::sqrt(std::clamp(view.coverage, 0.0, 1.0));
+    if (!(scale > 0.0)) return 0.0;
+    return scale * model.rayRmseUpTo(dir, stretched, limit / scale);
 }
 
 QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
@@ -155,7 +162,8 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
     if (fixedKind)
         kinds.push_back(*fixedKind);
     else
-        kinds = {false, true};
+        kinds = {true, false}; // pre-integrated (peaks) first: it usually meets the target
+                               // cheaply, and its cost then bounds the other walk
     // Samples per plane to try: the request's, or (planes automatic) powers of two; with a
     // fixed plane count the samples follow the rate.
     std::vector<int> sampleCounts;
@@ -169,8 +177,10 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
 
     QualityChoice best;
     double bestCost = std::numeric_limits<double>::infinity();
-    QualityChoice leastError;
-    leastError.predictedRmse = std::numeric_limits<double>::infinity();
+    // Candidates that missed the target, with their error or a lower bound of it (an
+    // evaluation stops once it proves the target missed): the least error among them is
+    // found exactly only when nothing meets the target.
+    std::vector<std::pair<double, SlabQuadrature>> missed;
     const double wanted = request.errorTarget * kTargetMargin;
     const bool single = request.numPlanes && request.samplesPerPlane;
     // The walk starts at the lowest rate: the signal's needs (SignalNeeds) would skip cheap
@@ -192,11 +202,8 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
                     continue; // too few planes: a higher rate gives more
                 const double cost = quadratureCost(q, view.depthL0, mode, model.tagged());
                 if (cost >= bestCost) break; // dearer than a choice that meets the target
-                const double error = predictImageRmse(model, view, q);
-                if (error < leastError.predictedRmse) {
-                    leastError.quadrature = q;
-                    leastError.predictedRmse = error;
-                }
+                const double error = predictImageRmseUpTo(model, view, q, wanted);
+                if (error > wanted) missed.emplace_back(error, q);
                 if (error <= wanted) {
                     best.quadrature = q;
                     best.predictedRmse = error;
@@ -209,7 +216,18 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
         }
     }
     if (!std::isfinite(bestCost)) {
-        best = leastError;
+        // The least error: exact values in the order of their bounds, until no bound is lower.
+        std::sort(missed.begin(), missed.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        best.predictedRmse = std::numeric_limits<double>::infinity();
+        for (const auto& [bound, q] : missed) {
+            if (!(bound < best.predictedRmse)) break;
+            const double error = predictImageRmse(model, view, q);
+            if (error < best.predictedRmse) {
+                best.quadrature = q;
+                best.predictedRmse = error;
+            }
+        }
         best.meetsTarget = false;
     }
     best.direction = SlabErrorModel::nearestDirection(view.localDirection, view.coneTangent > 0.2);

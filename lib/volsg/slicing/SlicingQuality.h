@@ -45,6 +45,10 @@ struct QualityChoice {
 /// The image RMSE the model predicts for quadrature q in this view: sqrt(coverage) times the
 /// RMSE of the rays through the box, with slabs stretched as perspective rays stretch them.
 double predictImageRmse(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q);
+/// predictImageRmse if it is at most `limit`, else a value above `limit` and at most it (the
+/// evaluation stops once the rays seen prove the limit passed).
+double predictImageRmseUpTo(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q,
+                            double limit);
 
 /// The cheapest quadrature (by the cost model in SlicingQuality.cpp) whose predicted image RMSE
 /// is at most the target, among those the request leaves free; the one with the least error
