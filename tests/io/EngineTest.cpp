@@ -354,6 +354,19 @@ TEST_CASE("a node field connected to another node's field follows it, versions c
     CHECK(m->version() == vm);
 }
 
+TEST_CASE("a warning about a node read from a file names the file, line and column") {
+    // Line 3 of engines.iv (the header is line 1): a translation fed booleans, which the
+    // reader cannot check (an engine's output type is known when it runs).
+    const ref_ptr<Node> root = read("Separator {\n"
+                                    "  Transform { translation = BoolOperation { } . output }\n"
+                                    "}\n");
+    std::vector<std::string> warnings;
+    ConnectionEvaluator evaluator([&](const std::string& w) { warnings.push_back(w); });
+    evaluator.evaluate(*root, 0.0);
+    REQUIRE(warnings.size() == 1);
+    CHECK(warnings[0].starts_with("engines.iv:3:3: field 'translation' of Transform: "));
+}
+
 TEST_CASE("a cycle of connections is broken with one warning") {
     auto c1 = Calculator::create();
     auto c2 = Calculator::create();

@@ -53,12 +53,17 @@ std::vector<Node*> reachable(Node& root) {
 
 ConnectionEvaluator::ConnectionEvaluator(WarningSink sink) : sink_(std::move(sink)) {}
 
-void ConnectionEvaluator::warn(const std::string& message) {
-    if (!warned_.insert(message).second) return;
+void ConnectionEvaluator::warn(const Node& node, const std::string& message) {
+    // Where the node came from, as a read error names it ("scene.iv:12:3: ..."), bounded and
+    // printable like every message.
+    const SourcePlace& place = node.sourcePlace();
+    const std::string line =
+        Error(message, place.file ? *place.file : std::string(), place.line, place.column).what();
+    if (!warned_.insert(line).second) return;
     if (sink_)
-        sink_(message);
+        sink_(line);
     else
-        std::cerr << "volsg: " << message << '\n';
+        std::cerr << "volsg: " << line << '\n';
 }
 
 std::size_t ConnectionEvaluator::evaluate(Node& root, double seconds) {
@@ -91,9 +96,9 @@ std::size_t ConnectionEvaluator::evaluate(Node& root, double seconds) {
                 const Mark m = mark[source];
                 if (m == Mark::Open) {
                     broken.insert(f);
-                    warn("connection cycle: field '" + std::string(f->name()) + "' of " +
-                         describe(*node) + " from '" + c->sourceField + "' of " +
-                         describe(*source) + " is not evaluated");
+                    warn(*node, "connection cycle: field '" + std::string(f->name()) + "' of " +
+                                    describe(*node) + " from '" + c->sourceField + "' of " +
+                                    describe(*source) + " is not evaluated");
                 } else if (m == Mark::None) {
                     mark[source] = Mark::Open;
                     stack.push_back({source, 0});
@@ -119,9 +124,9 @@ std::size_t ConnectionEvaluator::evaluate(Node& root, double seconds) {
             if (!c || !c->source || broken.count(f)) continue;
             Field* from = connectionSourceField(*c->source, c->sourceField);
             if (!from) {
-                warn("field '" + std::string(f->name()) + "' of " + describe(*node) +
-                     " is connected to '" + c->sourceField + "', which " + describe(*c->source) +
-                     " does not have");
+                warn(*node, "field '" + std::string(f->name()) + "' of " + describe(*node) +
+                                " is connected to '" + c->sourceField + "', which " +
+                                describe(*c->source) + " does not have");
                 continue;
             }
             if (c->lastCopied && c->lastCopied->equals(*from) &&
@@ -131,8 +136,8 @@ std::size_t ConnectionEvaluator::evaluate(Node& root, double seconds) {
                 if (assignConverted(*f, *from)) ++changed;
                 c->lastCopied = cloneField(*from);
             } catch (const Error& e) {
-                warn("field '" + std::string(f->name()) + "' of " + describe(*node) + ": " +
-                     e.message());
+                warn(*node, "field '" + std::string(f->name()) + "' of " + describe(*node) + ": " +
+                                e.message());
             }
         }
         if (auto* engine = dynamic_cast<Engine*>(node)) {
@@ -140,7 +145,7 @@ std::size_t ConnectionEvaluator::evaluate(Node& root, double seconds) {
                 try {
                     engine->evaluate(context);
                 } catch (const Error& e) {
-                    warn(describe(*node) + ": " + e.message());
+                    warn(*node, describe(*node) + ": " + e.message());
                 }
             }
         } else if (auto* animated = dynamic_cast<Animated*>(node)) {

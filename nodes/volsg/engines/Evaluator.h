@@ -25,6 +25,10 @@ namespace volsg {
 /// - a cycle of connections is broken at the connection that closes it, which is not
 ///   evaluated; the warning sink gets one line naming it, once per evaluator.
 ///
+/// Warnings (a cycle, a field that cannot take its source's value, an engine that fails) are
+/// one line each, prefixed with the file, line and column of the node they concern when it
+/// was read from a file.
+///
 /// `seconds` is the scene time: 0 when the scene starts playing, growing in real seconds.
 class ConnectionEvaluator {
 public:
@@ -36,7 +40,7 @@ public:
     std::size_t evaluate(Node& root, double seconds);
 
 private:
-    void warn(const std::string& message);
+    void warn(const Node& node, const std::string& message);
     WarningSink sink_;
     std::set<std::string> warned_;
 };
