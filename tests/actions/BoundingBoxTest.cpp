@@ -192,3 +192,22 @@ TEST_CASE("bounding box action can be applied again to a changed scene") {
     action.apply(*root); // starts from an empty box, not the previous one
     CHECK(boxNear(action.boundingBox(), {-1, -1, -3}, {1, 1, -1}, 0.0));
 }
+
+TEST_CASE("a shape's box follows edits of the points its mesh is built from") {
+    // The mesh's bounds are kept with the mesh (found once per build, not per instance); an
+    // edit that rebuilds the mesh must move them, in every instance.
+    auto root = Separator::create();
+    auto coords = Coordinate3::create();
+    coords->point.setValues({{0, 0, 0}, {2, 0, 0}, {2, 3, 0}});
+    root->addChild(coords);
+    auto faces = IndexedFaceSet::create();
+    faces->coordIndex.setValues({0, 1, 2, -1});
+    root->addChild(faces);
+    root->addChild(translation(10, 0, 0));
+    root->addChild(faces); // a second instance, 10 to the right
+    CHECK(boxNear(computeBoundingBox(*root), {0, 0, 0}, {12, 3, 0}, 0.0));
+    coords->point.set1Value(2, {2, 5, -1});
+    CHECK(boxNear(computeBoundingBox(*root), {0, 0, -1}, {12, 5, 0}, 0.0));
+    faces->coordIndex.setValues({0, 1, -1}); // a degenerate face: no triangle, no points used
+    CHECK(computeBoundingBox(*root).isEmpty());
+}

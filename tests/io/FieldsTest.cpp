@@ -80,9 +80,9 @@ TEST_CASE("SFFloat reads integers, signs, exponents and a leading point") {
     const std::pair<const char*, float> cases[] = {
         {"1", 1.0f},     {"-1.5e3", -1500.0f},      {".5", 0.5f},   {"+2.", 2.0f}, {"-.25", -0.25f},
         {"1E2", 100.0f}, {"3.4028235e38", FLT_MAX}, {"1e-50", 0.0f}};
-    for (const auto& [text, value] : cases) {
-        parse(n->sfFloat, text);
-        CHECK_MESSAGE(n->sfFloat() == value, text);
+    for (const auto& c : cases) { // not a structured binding: CHECK_MESSAGE captures it
+        parse(n->sfFloat, c.first);
+        CHECK_MESSAGE(n->sfFloat() == c.second, c.first);
     }
     CHECK_FALSE(n->sfFloat.isDefault());
 }

@@ -25,7 +25,7 @@ namespace {
 /// (Coin's computeBBox), whatever the complexity.
 template <class Primitive> bool boundPrimitive(BoundingBoxAction& action, Shape& shape) {
     if (!shape.isA<Primitive>()) return false;
-    if (!shape.mesh(action.state()).bounds().isEmpty())
+    if (!shape.meshBounds(action.state()).isEmpty())
         action.extendByLocal(static_cast<Primitive&>(shape).objectBox());
     return true;
 }
@@ -34,7 +34,7 @@ void boundShape(BoundingBoxAction& action, Shape& shape) {
     if (boundPrimitive<Sphere>(action, shape) || boundPrimitive<Cone>(action, shape) ||
         boundPrimitive<Cylinder>(action, shape))
         return;
-    action.extendByLocal(shape.mesh(action.state()).bounds());
+    action.extendByLocal(shape.meshBounds(action.state()));
 }
 
 void boundVolume(BoundingBoxAction& action, Volume&) {

@@ -10,10 +10,16 @@ const Mesh& Shape::mesh(const State& state) const {
     if (!meshValid_ || key != meshKey_) {
         meshValid_ = false; // stays invalid if building throws
         buildMesh(state, mesh_);
+        meshBounds_ = mesh_.bounds();
         meshKey_ = key;
         meshValid_ = true;
     }
     return mesh_;
+}
+
+const Box3& Shape::meshBounds(const State& state) const {
+    (void)mesh(state);
+    return meshBounds_;
 }
 
 std::uint64_t Shape::meshKey(const State& state) const {

@@ -18,6 +18,9 @@ public:
 
     /// The mesh for the current state, rebuilt only when meshKey() changes.
     const Mesh& mesh(const State& state) const;
+    /// The bounds of mesh(state), found once per build (a text's mesh under many instances is
+    /// bounded once, not once per instance).
+    const Box3& meshBounds(const State& state) const;
     /// Identifies everything the mesh depends on; the node's version by default. Shapes that
     /// read state (IndexedFaceSet reads Coordinate3 and Normal) combine their versions.
     virtual std::uint64_t meshKey(const State& state) const;
@@ -28,6 +31,7 @@ protected:
 
 private:
     mutable Mesh mesh_;
+    mutable Box3 meshBounds_;
     mutable std::uint64_t meshKey_ = 0;
     mutable bool meshValid_ = false;
 };
