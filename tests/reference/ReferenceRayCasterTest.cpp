@@ -145,7 +145,7 @@ TEST_CASE("constant box transmittance is exp of minus tau times the chord") {
 }
 
 TEST_CASE("rotated constant box follows the geometric chord length") {
-    const glm::dvec3 C(0.3, 0.9, 0.5), bg(0.0);
+    const glm::dvec3 C(0.3, 0.9, 0.5);
     RayCastScene scene;
     scene.camera = orthoCamera(40, 40, 0.9);
     RayCastVolume v = constantBox(C, 0.05);

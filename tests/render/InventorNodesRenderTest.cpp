@@ -101,7 +101,7 @@ bool sameImage(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height && a.pixels == b.pixels;
 }
 
-const glm::vec3 kRed(1, 0, 0), kGreen(0, 1, 0), kBlue(0, 0, 1);
+const glm::vec3 kRed(1, 0, 0), kGreen(0, 1, 0);
 
 std::filesystem::path freshFolder(const std::string& name) {
     const auto dir = std::filesystem::temp_directory_path() / ("volsg-inventor-render-" + name);
