@@ -58,7 +58,9 @@ bool readsOrFailsCleanly(const std::string& bytes, const std::string& name, std:
 TEST_CASE("a binary file cut at every byte reads or is refused at a byte offset") {
     const auto files = seeds();
     REQUIRE(files.size() >= 5);
-    for (const auto& [name, file] : files) {
+    for (const auto& seed : files) { // not a structured binding: CAPTURE's lambda captures it
+        const std::string& name = seed.first;
+        const std::string& file = seed.second;
         CAPTURE(name);
         int refused = 0;
         for (std::size_t cut = 24; cut < file.size(); ++cut) {
@@ -76,7 +78,9 @@ TEST_CASE("a binary file cut at every byte reads or is refused at a byte offset"
 }
 
 TEST_CASE("a binary file with any one byte changed reads or is refused at a byte offset") {
-    for (const auto& [name, file] : seeds()) {
+    for (const auto& seed : seeds()) { // not a structured binding: CAPTURE captures it
+        const std::string& name = seed.first;
+        const std::string& file = seed.second;
         CAPTURE(name);
         for (std::size_t i = 24; i < file.size(); ++i) {
             for (unsigned char change : {0xFF, 0x80, 0x01}) {

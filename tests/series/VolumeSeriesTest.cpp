@@ -171,9 +171,10 @@ TEST_CASE("malformed series fields are clear errors") {
         {"timeGenerator MOVING_SPHERE dimensions 8 8 9", "cubic"},
         {"", "VolumeSeries needs"},
     };
-    for (const auto& [fields, message] : cases) {
+    for (const auto& c : cases) { // not a structured binding: CAPTURE's lambda captures it
+        const char* fields = c.first;
         CAPTURE(fields);
-        CHECK_THROWS_WITH_AS(gridOf(fields), doctest::Contains(message), Error);
+        CHECK_THROWS_WITH_AS(gridOf(fields), doctest::Contains(c.second), Error);
     }
 }
 
@@ -204,7 +205,7 @@ TEST_CASE("a clip change costs no extraction until a step is shown, then matches
         clipKeys.push_back(cached->renderList(2).clipKey);
     }
 
-    plane->plane = Plane(glm::vec3(1.0f, 0.0f, 0.0f), 0.1f); // cut the sphere
+    plane->plane = Plane{glm::vec3(1.0f, 0.0f, 0.0f), 0.1f}; // cut the sphere
     renderer.render(*root, smallOptions());                  // step 5 is shown: only it updates
     series->cache().waitUntilIdle();
     CHECK(series->cache().stats().extractions == before.extractions);

@@ -47,7 +47,8 @@ int backgroundIn(const Image& image, const PixelRect& r) {
 /// The view's corners (4 px in) show the background: nothing else is drawn there, so a panel
 /// over the view would show.
 void checkViewCorners(const Image& image, const PixelRect& r) {
-    for (const auto& [x, y] : {std::pair{r.x + 4, r.y + 4}, {r.x + r.width - 5, r.y + 4}}) {
+    for (const auto& corner : {std::pair{r.x + 4, r.y + 4}, {r.x + r.width - 5, r.y + 4}}) {
+        const int x = corner.first, y = corner.second; // CAPTURE cannot take a binding
         CAPTURE(x);
         CAPTURE(y);
         CHECK(isBackground(image, x, y));

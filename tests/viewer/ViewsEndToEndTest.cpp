@@ -107,7 +107,8 @@ TEST_CASE("scripted viewer session switches views, stereo and navigation and mov
         }
     CHECK(redOnly > 20);
     // Four views: each quadrant shows something (3D volume, axial, coronal, sagittal slices).
-    for (const auto& [x0, y0] : {std::pair{0, 0}, {320, 0}, {0, 200}, {320, 200}}) {
+    for (const auto& corner : {std::pair{0, 0}, {320, 0}, {0, 200}, {320, 200}}) {
+        const int x0 = corner.first, y0 = corner.second; // CAPTURE cannot take a binding
         CAPTURE(x0);
         CAPTURE(y0);
         CHECK(nonBackground(four, x0, y0, x0 + 320, y0 + 200) > 4000);

@@ -495,7 +495,9 @@ TEST_CASE("NRRD accepts every spelling of the supported types") {
         {"int16", VoxelType::Short},
         {"int16_t", VoxelType::Short},
         {"float", VoxelType::Float}};
-    for (const auto& [name, type] : spellings) {
+    for (const auto& spelling : spellings) { // not a structured binding: INFO captures it
+        const std::string& name = spelling.first;
+        const VoxelType type = spelling.second;
         INFO("type: " << name);
         const std::string path = dir.file("typed.nrrd");
         writeFile(path, joinLines({"NRRD0004", "type: " + name, "dimension: 3", "sizes: 5 4 3",
