@@ -404,8 +404,8 @@ TEST_CASE("NURBS garbage draws nothing and never crashes") {
     SUBCASE("trim garbage: an open loop, a bad NurbsProfile, indices out of range") {
         const char* trims[] = {
             "ProfileCoordinate2 { point [ 0.2 0.2, 0.8 0.2 ] } LinearProfile { index [ 0, 1 ] }",
-            "ProfileCoordinate2 { point [ 0 0, 1 0, 1 1 ] } NurbsProfile { index [ 0, 1, 2 ] "
-            "knotVector [ 1, 0, 0, 1, 1 ] }",
+            ("ProfileCoordinate2 { point [ 0 0, 1 0, 1 1 ] } NurbsProfile { index [ 0, 1, 2 ] "
+             "knotVector [ 1, 0, 0, 1, 1 ] }"),
             "ProfileCoordinate2 { point [ 0 0 ] } LinearProfile { index [ 5, 6, 7, -1 ] }",
         };
         for (const char* t : trims) {
