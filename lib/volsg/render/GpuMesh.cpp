@@ -28,6 +28,7 @@ void GpuMesh::upload(const Mesh& mesh) {
     hasTranslucentColors = hasColors && std::any_of(mesh.colors.begin(), mesh.colors.end(),
                                                     [](const glm::vec4& c) { return c.a < 1.0f; });
     bounds = mesh.bounds();
+    shading = measureShadingSpread(mesh);
 
     if (!vertexArray) {
         vertexArray = VertexArray::create();

@@ -5,6 +5,7 @@
 #include <volsg/gl/Buffer.h>
 #include <volsg/gl/VertexArray.h>
 #include <volsg/math/Box3.h>
+#include <volsg/render/VertexLighting.h>
 
 namespace volsg {
 
@@ -28,6 +29,7 @@ struct GpuMesh {
     bool hasTranslucentColors = false; ///< some vertex colour has alpha < 1
     bool hasTexCoords = false;         ///< one texture coordinate per position
     Box3 bounds;                       ///< local coordinates
+    ShadingSpread shading;             ///< what decides per-vertex lighting (VertexLighting.h)
     bool uploaded = false;
 
     /// Sends `mesh` to the GPU (the GL context must be current). Throws Error for an index

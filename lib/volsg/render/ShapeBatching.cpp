@@ -60,6 +60,9 @@ void ShapeRenderer::batch(const GpuMesh& gpu, const ShapeLook& look) {
     key.lineWidth = look.lineWidth;
     key.pointSize = look.pointSize;
     key.lit = lit;
+    key.vertexLighting = lit && lightsPerVertex(gpu, look);
+    if (lit) ++litLastFrame_;
+    if (key.vertexLighting) ++vertexLitLastFrame_;
     key.cull = cullsBackFaces(gpu, look);
     const bool mirrored = glm::determinant(glm::dmat3(look.model)) < 0.0;
     key.frontClockwise = look.clockwise != mirrored;
@@ -126,12 +129,11 @@ void ShapeRenderer::flushOpaque() {
     }
     instanceBuffer_.setData(instances_, GL_STREAM_DRAW);
 
-    instancedProgram_.use();
     constexpr GLsizei stride = sizeof(Instance);
     for (std::size_t g = 0; g < batches_.size(); ++g) {
         const DrawItem& item = batches_[g].item;
         const GpuMesh& gpu = *item.mesh;
-        applyState(instancedLoc_, item, false);
+        applyState(useVariant(item, true), item, false);
         gpu.vertexArray.bind();
         glBindBuffer(GL_ARRAY_BUFFER, instanceBuffer_.id());
         const std::size_t base = ranges[g].first * sizeof(Instance);

@@ -23,37 +23,72 @@ glm::mat3 normalMatrixOf(const glm::dmat4& model) {
 
 ShapeRenderer::Locations ShapeRenderer::locate(const Program& p) const {
     auto at = [&p](const char* name) { return p.uniformLocation(name); };
-    return {at("uModel"),          at("uNormalMatrix"),
-            at("uViewProjection"), at("uView"),
-            at("uTextureMatrix"),  at("uLit"),
-            at("uHasNormals"),     at("uHasColors"),
-            at("uEmissive"),       at("uAmbient"),
-            at("uDiffuse"),        at("uSpecular"),
-            at("uShininess"),      at("uAlpha"),
-            at("uViewer"),         at("uSpot"),
-            at("uSpotExponent"),   at("uAttenuation"),
-            at("uTextureModel"),   at("uSphereMap"),
-            at("uTexture"),        at("uBlendColor"),
-            at("uFogType"),        at("uFogColor"),
-            at("uFogVisibility"),  at("uTwoSided"),
-            at("uCullByNormal"),   SurfaceScope::Locations::of(p)};
+    return {at("uModel"),        at("uNormalMatrix"),  at("uViewProjection"),
+            at("uView"),         at("uTextureMatrix"), at("uEmissive"),
+            at("uAmbient"),      at("uDiffuse"),       at("uSpecular"),
+            at("uShininess"),    at("uAlpha"),         at("uViewer"),
+            at("uSpot"),         at("uSpotExponent"),  at("uAttenuation"),
+            at("uTextureModel"), at("uBlendColor"),    at("uFogType"),
+            at("uFogColor"),     at("uFogVisibility"), SurfaceScope::Locations::of(p)};
 }
 
 ShapeRenderer::ShapeRenderer() {
     maxClipPlanes_ = queryMaxClipPlanes(kMaxClipPlanes);
-    program_ = shaders::surfaceProgram(shaders::shapeVertex, shaders::shapeFragment, maxClipPlanes_,
-                                       "shape");
-    instancedProgram_ =
-        shaders::surfaceProgram(shaders::shapeVertex, shaders::shapeFragment, maxClipPlanes_,
-                                "instanced shape", "#define INSTANCED\n");
-    programBuilds_ += 2;
-    loc_ = locate(program_);
-    instancedLoc_ = locate(instancedProgram_);
-    for (const Program* p : {&program_, &instancedProgram_}) {
-        p->use();
-        glUniform1i(p->uniformLocation("uTexture"), 0);
-    }
     instanceBuffer_ = Buffer(GL_ARRAY_BUFFER);
+}
+
+const ShapeRenderer::Locations& ShapeRenderer::useVariant(const DrawItem& item, bool instanced) {
+    const GpuMesh& gpu = *item.mesh;
+    const bool flags[] = {instanced,
+                          item.vertexLighting,
+                          item.lit,
+                          gpu.hasNormals,
+                          gpu.hasColors,
+                          item.twoSided,
+                          item.cull && drawsOutline(item),
+                          item.textureModel >= 0,
+                          item.textureModel >= 0 && item.sphereMap,
+                          item.environment.fogType != 0};
+    unsigned key = 0;
+    for (std::size_t i = 0; i < std::size(flags); ++i)
+        key |= unsigned(flags[i]) << i;
+    auto [found, added] = variants_.try_emplace(key);
+    Variant& v = found->second;
+    if (added) {
+        static constexpr const char* names[] = {
+            "LIT",      "HAS_NORMALS", "HAS_COLORS", "TWO_SIDED", "CULL_BY_NORMAL",
+            "TEXTURED", "SPHERE_MAP",  "FOG"};
+        std::string defines = instanced ? "#define INSTANCED\n" : "";
+        if (item.vertexLighting) defines += "#define VERTEX_LIGHTING\n";
+        for (std::size_t i = 0; i < std::size(names); ++i)
+            defines += std::string("#define ") + names[i] + (flags[i + 2] ? " true\n" : " false\n");
+        // The vertex stage sums lights only per vertex (its light uniforms exist only then).
+        const std::string vertex = std::string(shaders::shapeVertex) +
+                                   (item.vertexLighting ? shaders::shapeLighting : "") +
+                                   shaders::shapeVertexMain;
+        const std::string fragment = std::string(shaders::shapeFragment) + shaders::shapeLighting +
+                                     shaders::shapeFragmentMain;
+        try {
+            v.program = shaders::surfaceProgram(vertex.c_str(), fragment.c_str(), maxClipPlanes_,
+                                                "shape", defines);
+        } catch (...) {
+            variants_.erase(found);
+            throw;
+        }
+        v.at = locate(v.program);
+        v.program.use();
+        glUniform1i(v.program.uniformLocation("uTexture"), 0);
+        ++programBuilds_;
+    }
+    v.program.use();
+    if (v.frame != frameSerial_) {
+        // Per-frame uniforms are program state: set once per frame and program.
+        glUniformMatrix4fv(v.at.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection_));
+        glUniform4fv(v.at.viewer, 1, glm::value_ptr(viewer_));
+        glUniformMatrix4fv(v.at.view, 1, GL_FALSE, glm::value_ptr(eye_));
+        v.frame = frameSerial_;
+    }
+    return v.at;
 }
 
 void ShapeRenderer::upload(GpuMesh& gpu, const Mesh& mesh) {
@@ -65,22 +100,16 @@ void ShapeRenderer::beginFrame(const RenderView& view) {
     view_ = view;
     transparentQueue_.clear();
     drawsLastFrame_ = 0;
+    vertexLitLastFrame_ = litLastFrame_ = 0;
     batchesLastFrame_ = batchedShapesLastFrame_ = 0;
     scopes_.clear();
     batches_.clear();
     batchIndex_.clear();
     batched_.clear();
-    // Per-frame uniforms are program state: set once, they survive other programs' use.
-    const glm::mat4 viewProjection(view.projection * view.view);
-    const glm::vec4 viewer(view.viewer);
-    const glm::mat4 eye(view.view);
-    for (const auto& [program, at] :
-         {std::pair{&program_, &loc_}, std::pair{&instancedProgram_, &instancedLoc_}}) {
-        program->use();
-        glUniformMatrix4fv(at->viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
-        glUniform4fv(at->viewer, 1, glm::value_ptr(viewer));
-        glUniformMatrix4fv(at->view, 1, GL_FALSE, glm::value_ptr(eye));
-    }
+    ++frameSerial_; // the variants take the view uniforms when first used in the frame
+    viewProjection_ = glm::mat4(view.projection * view.view);
+    viewer_ = glm::vec4(view.viewer);
+    eye_ = glm::mat4(view.view);
 }
 
 void ShapeRenderer::beginPass() {
@@ -106,10 +135,12 @@ void ShapeRenderer::submit(const FrameContext& frame, const GpuMesh& gpu, const 
     } else if (frame.pass == RenderPass::Opaque && !transparent) {
         DrawItem item;
         fill(gpu, look, item);
+        countLighting(item);
         draw(item);
     } else if (frame.pass == RenderPass::Transparent && transparent) {
         DrawItem& item = transparentQueue_.emplace_back();
         fill(gpu, look, item);
+        countLighting(item);
         const glm::dvec4 centre = view_.view * look.model * glm::dvec4(gpu.bounds.center(), 1.0);
         item.eyeDepth = gpu.bounds.isEmpty() ? 0.0 : centre.z;
     }
@@ -156,6 +187,7 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
     item.environment = look.environment;
 
     item.scope.lightCount = 0;
+    item.vertexLighting = item.lit && lightsPerVertex(gpu, look);
     if (item.lit) {
         item.scope.setLights(look.lights, "a shape", "a shape");
         for (std::size_t i = 0; i < look.lights.size(); ++i) {
@@ -182,8 +214,7 @@ void ShapeRenderer::draw(const DrawItem& item) {
         return;
     }
     const GpuMesh& gpu = *item.mesh;
-    program_.use();
-    applyState(loc_, item, true);
+    applyState(useVariant(item, false), item, true);
     gpu.vertexArray.bind();
     drawElements(item, 1);
     restoreState(item);
@@ -202,10 +233,6 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
         glUniform1f(at.shininess, item.shininess);
         glUniform1f(at.alpha, item.alpha);
     }
-    glUniform1i(at.lit, item.lit ? 1 : 0);
-    glUniform1i(at.twoSided, item.twoSided ? 1 : 0);
-    glUniform1i(at.hasNormals, gpu.hasNormals ? 1 : 0);
-    glUniform1i(at.hasColors, gpu.hasColors ? 1 : 0);
     item.scope.upload(at.scope);
     const int lights = item.scope.lightCount;
     if (lights > 0) {
@@ -214,7 +241,7 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
     }
     const ShapeEnvironment& env = item.environment;
     glUniform3fv(at.attenuation, 1, glm::value_ptr(env.attenuation));
-    glUniform1i(at.fogType, env.fogType);
+    if (env.fogType != 0) glUniform1i(at.fogType, env.fogType);
     glUniform3fv(at.fogColor, 1, glm::value_ptr(env.fogColor));
     // Fog without a visibility reaches the far plane; its distance is not known here, so the
     // renderer uses the eye distance to the far plane of the projection.
@@ -229,7 +256,6 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
     glUniform1i(at.textureModel, item.textureModel);
     if (item.textureModel >= 0) {
         item.texture->texture.bind(0);
-        glUniform1i(at.sphereMap, item.sphereMap ? 1 : 0);
         glUniform3fv(at.blendColor, 1, glm::value_ptr(item.blendColor));
         glUniformMatrix4fv(at.textureMatrix, 1, GL_FALSE, glm::value_ptr(item.textureMatrix));
     }
@@ -248,13 +274,29 @@ void ShapeRenderer::applyState(const Locations& at, const DrawItem& item, bool w
     if (points && item.pointSize != 1.0f) glPointSize(item.pointSize);
     // Back faces are culled in every polygon mode, as GL culls for Coin; the edges of an
     // outline are lines, which GL does not cull: the shader drops a back face's by its normal.
-    const bool byNormal = item.cull && drawsOutline(item);
-    glUniform1i(at.cullByNormal, byNormal ? 1 : 0);
+    const bool byNormal = item.cull && drawsOutline(item); // the program's CULL_BY_NORMAL
     if (item.cull && !byNormal) {
         glEnable(GL_CULL_FACE);
         glCullFace(GL_BACK);
         glFrontFace(item.frontClockwise ? GL_CW : GL_CCW);
     }
+}
+
+bool ShapeRenderer::lightsPerVertex(const GpuMesh& gpu, const ShapeLook& look) const {
+    if (lighting_ != RenderDebug::Lighting::Automatic)
+        return lighting_ == RenderDebug::Lighting::PerVertex && gpu.hasNormals;
+    VertexLightingCase c;
+    c.spread = gpu.shading;
+    c.bounds = gpu.bounds;
+    c.model = look.model;
+    c.diffuse = look.material.diffuse;
+    c.specular = look.material.specular;
+    c.shininess = look.material.shininess * 128.0f;
+    c.vertexColors = gpu.hasColors;
+    c.lights = look.lights;
+    c.attenuation = look.environment.attenuation;
+    c.viewer = view_.viewer;
+    return predictVertexLightingError(c) <= kVertexLightingTolerance;
 }
 
 bool ShapeRenderer::cullsBackFaces(const GpuMesh& gpu, const ShapeLook& look) {

@@ -80,7 +80,8 @@ struct ShapeLook {
 };
 
 /// One per Renderer (so per GL context): the shape program and the queue of transparent
-/// shapes. Shading (linear values, no gamma), per fragment:
+/// shapes. Shading (linear values, no gamma), per fragment or, where that matches within
+/// kVertexLightingTolerance, per vertex (setLighting, VertexLighting.h):
 ///   colour = emissive + ambient * environment ambient
 ///          + sum over lights of strength * intensity * colour * (diffuse * max(N.L, 0)
 ///                                                    + specular * max(N.H, 0)^(shininess*128))
@@ -117,6 +118,8 @@ public:
     /// materials in a per-instance buffer, each group's shapes front to back. Off: each shape
     /// is drawn when it is submitted (Annotations, whose shapes draw in scene order).
     void setBatching(bool on) { batching_ = on; }
+    /// Where lights are summed (RenderDebug::shapeLighting; Automatic by default).
+    void setLighting(RenderDebug::Lighting lighting) { lighting_ = lighting; }
     /// Draws the opaque shapes batched since the last flush (the Renderer calls it at the end
     /// of the opaque pass).
     void flushOpaque();
@@ -150,6 +153,9 @@ public:
     std::size_t instanceBytes() const { return instanceBuffer_.size(); }
     std::uint64_t programBuilds() const { return programBuilds_; }
     std::size_t drawsLastFrame() const { return drawsLastFrame_; }
+    /// Shapes lit per vertex in this frame (of all lit shapes submitted).
+    std::size_t vertexLitLastFrame() const { return vertexLitLastFrame_; }
+    std::size_t litLastFrame() const { return litLastFrame_; }
 
 private:
     /// Everything one draw needs, captured during traversal (transparent draws happen after).
@@ -160,6 +166,7 @@ private:
         glm::vec3 emissive{0.0f}, ambient{0.0f}, diffuse{0.8f}, specular{0.0f};
         float shininess = 0.0f, alpha = 1.0f;
         bool lit = true;
+        bool vertexLighting = false; ///< the lights summed per vertex
         ShapeLook::Style style = ShapeLook::Style::Filled;
         float lineWidth = 1.0f, pointSize = 1.0f;
         bool cull = false, frontClockwise = false, twoSided = false;
@@ -176,11 +183,17 @@ private:
         std::function<void()> external; ///< set: a queueTransparent() draw, not a mesh
     };
     struct Locations {
-        GLint model, normalMatrix, viewProjection, view, textureMatrix, lit, hasNormals, hasColors,
-            emissive, ambient, diffuse, specular, shininess, alpha, viewer, spot, spotExponent,
-            attenuation, textureModel, sphereMap, texture, blendColor, fogType, fogColor,
-            fogVisibility, twoSided, cullByNormal;
+        GLint model, normalMatrix, viewProjection, view, textureMatrix, emissive, ambient, diffuse,
+            specular, shininess, alpha, viewer, spot, spotExponent, attenuation, textureModel,
+            blendColor, fogType, fogColor, fogVisibility;
         SurfaceScope::Locations scope;
+    };
+    /// The shape program specialised for one kind of draw (ShapeShaders.h), compiled when
+    /// first needed.
+    struct Variant {
+        Program program;
+        Locations at{};
+        std::uint64_t frame = 0; ///< the frame whose view uniforms it holds
     };
 
     /// One batched shape's own values, as the instanced program reads them (locations 4-11).
@@ -196,7 +209,7 @@ private:
         int scope; ///< index into scopes_
         int textureModel, style;
         float lineWidth, pointSize;
-        std::uint8_t lit, cull, frontClockwise, sphereMap, twoSided;
+        std::uint8_t lit, vertexLighting, cull, frontClockwise, sphereMap, twoSided;
         glm::vec3 blendColor;
         glm::mat4 textureMatrix;
         glm::vec3 attenuation, fogColor;
@@ -219,6 +232,10 @@ private:
     };
 
     void fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& item);
+    void countLighting(const DrawItem& item) {
+        litLastFrame_ += item.lit;
+        vertexLitLastFrame_ += item.vertexLighting;
+    }
     void draw(const DrawItem& item);
     /// Sets the uniforms and GL state of `item` but the model matrix and material (which
     /// `withMaterial` adds) in the program in use, whose uniforms are at `at`.
@@ -233,12 +250,19 @@ private:
     void batch(const GpuMesh& gpu, const ShapeLook& look);
     int internScope(const ShapeLook& look, bool lit);
     Locations locate(const Program& program) const;
+    /// Whether `gpu` drawn as `look` (lit) sums its lights per vertex.
+    bool lightsPerVertex(const GpuMesh& gpu, const ShapeLook& look) const;
+    /// Puts the program specialised for `item` in use, with this frame's view uniforms, and
+    /// says where its uniforms are.
+    const Locations& useVariant(const DrawItem& item, bool instanced);
 
-    Program program_;
-    Locations loc_{};
-    Program instancedProgram_;
-    Locations instancedLoc_{};
+    std::unordered_map<unsigned, Variant> variants_; ///< by their specialisation bits
+    std::uint64_t frameSerial_ = 0;
+    glm::mat4 viewProjection_{1.0f}, eye_{1.0f};
+    glm::vec4 viewer_{0.0f, 0.0f, 1.0f, 0.0f};
     bool batching_ = true;
+    RenderDebug::Lighting lighting_ = RenderDebug::Lighting::Automatic;
+    std::size_t vertexLitLastFrame_ = 0, litLastFrame_ = 0;
     std::vector<Scope> scopes_;
     std::vector<Batch> batches_;
     std::unordered_map<std::uint64_t, std::size_t> batchIndex_; ///< key hash -> batches_

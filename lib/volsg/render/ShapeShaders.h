@@ -1,10 +1,44 @@
 #pragma once
-// GLSL of the shape program: Inventor's fixed-function Phong model, per fragment, with its
-// texture models, spot lights, environment (ambient light, attenuation, fog). With INSTANCED
-// defined, the model matrix and the material come per instance (batched draws).
-// Each stage follows the prelude and the shared surface code (SurfaceShaders.h).
+// GLSL of the shape program: Inventor's fixed-function Phong model, with its texture models,
+// spot lights, environment (ambient light, attenuation, fog). With INSTANCED defined, the
+// model matrix and the material come per instance (batched draws). The lights are summed per
+// fragment, or with VERTEX_LIGHTING defined per vertex, as Inventor's OpenGL does, where that
+// matches within the stated tolerance (VertexLighting.h).
+// Each stage follows the prelude and the shared surface code (SurfaceShaders.h); the lights'
+// sum (shapeLighting) sits between a stage's declarations and its main. The program is
+// specialised per draw (ShapeRenderer::variant): LIT, HAS_NORMALS, HAS_COLORS, TWO_SIDED,
+// CULL_BY_NORMAL, TEXTURED, SPHERE_MAP and FOG are defined true or false, so that a software
+// rasteriser runs no code a draw does not need (uniform branches cost it every fragment).
 
 namespace volsg::shaders {
+
+/// The sum over the lights in scope at world point P with unit normal N and unit V (towards
+/// the viewer), without emissive and ambient (ShapeRenderer.h gives the model). Uses
+/// uLightCount, uLightVector, uLightColor, uSpot, uSpotExponent and uAttenuation.
+inline constexpr const char* shapeLighting = R"GLSL(
+vec3 sumOfLights(vec3 P, vec3 N, vec3 V, vec3 diffuse, vec3 specularColor, float shininess) {
+    vec3 color = vec3(0.0);
+    for (int i = 0; i < uLightCount; ++i) {
+        vec3 toLight = uLightVector[i].xyz - P * uLightVector[i].w;
+        vec3 L = normalize(toLight);
+        float NdotL = dot(N, L);
+        if (NdotL <= 0.0) continue; // no diffuse and, as in OpenGL, no specular
+        float strength = 1.0;
+        if (uLightVector[i].w != 0.0) {
+            float d = length(toLight);
+            float a = uAttenuation.z + uAttenuation.y * d + uAttenuation.x * d * d;
+            strength = a > 0.0 ? 1.0 / a : 1.0;
+            float spotCos = dot(-L, uSpot[i].xyz);
+            if (spotCos < uSpot[i].w) continue; // outside the cone
+            if (uSpotExponent[i] > 0.0) strength *= pow(max(spotCos, 0.0), uSpotExponent[i]);
+        }
+        float NdotH = max(dot(N, normalize(L + V)), 0.0);
+        float specular = NdotH > 0.0 ? pow(NdotH, shininess) : (shininess == 0.0 ? 1.0 : 0.0);
+        color += strength * uLightColor[i] * (diffuse * NdotL + specularColor * specular);
+    }
+    return color;
+}
+)GLSL";
 
 inline constexpr const char* shapeVertex = R"GLSL(
 layout(location = 2) in vec4 aColor;
@@ -27,6 +61,41 @@ flat out vec4 vDiffuseAlpha;
 flat out vec3 vSpecular;
 #endif
 
+#ifdef VERTEX_LIGHTING
+uniform vec4 uViewer;
+uniform int uLightCount;
+uniform vec4 uLightVector[MAX_LIGHTS];
+uniform vec3 uLightColor[MAX_LIGHTS];
+uniform vec4 uSpot[MAX_LIGHTS];
+uniform float uSpotExponent[MAX_LIGHTS];
+uniform vec3 uAttenuation;
+#ifdef INSTANCED
+#define mEmissive aEmissiveShininess.rgb
+#define mShininess aEmissiveShininess.a
+#define mAmbient aAmbient.rgb
+#define mDiffuse aDiffuseAlpha.rgb
+#define mAlpha aDiffuseAlpha.a
+#define mSpecular aSpecular.rgb
+#else
+uniform vec3 uEmissive;
+uniform vec3 uAmbient;
+uniform vec3 uDiffuse;
+uniform vec3 uSpecular;
+uniform float uShininess;
+uniform float uAlpha;
+#define mEmissive uEmissive
+#define mShininess uShininess
+#define mAmbient uAmbient
+#define mDiffuse uDiffuse
+#define mAlpha uAlpha
+#define mSpecular uSpecular
+#endif
+out vec4 vFrontColor; // lit with the normal
+out vec4 vBackColor;  // lit with the normal turned around (two-sided lighting)
+#endif
+)GLSL";
+
+inline constexpr const char* shapeVertexMain = R"GLSL(
 void main() {
 #ifdef INSTANCED
     vEmissiveShininess = aEmissiveShininess;
@@ -38,18 +107,34 @@ void main() {
     vColor = aColor;
     vTexCoord = (uTextureMatrix * vec4(aTexCoord0, 0.0, 1.0)).xy;
     vEyeDistance = -(uView * world).z;
+#ifdef VERTEX_LIGHTING
+    // Chosen only for meshes with nonzero normals (VertexLighting.h).
+    vec3 N = normalize(vWorldNormal);
+    vec3 V = normalize(uViewer.xyz - world.xyz * uViewer.w);
+    vec3 diffuse = HAS_COLORS ? aColor.rgb : mDiffuse;
+    float alpha = HAS_COLORS ? aColor.a : mAlpha;
+    vec3 base = mEmissive + mAmbient;
+    vFrontColor = vec4(base + sumOfLights(world.xyz, N, V, diffuse, mSpecular, mShininess), alpha);
+    vBackColor = TWO_SIDED
+        ? vec4(base + sumOfLights(world.xyz, -N, V, diffuse, mSpecular, mShininess), alpha)
+        : vFrontColor;
+#endif
 }
 )GLSL";
 
 inline constexpr const char* shapeFragment = R"GLSL(
 in vec2 vTexCoord;
+#ifdef VERTEX_LIGHTING
+in vec4 vFrontColor;
+in vec4 vBackColor;
+#endif
 in float vEyeDistance;
 
-uniform bool uLit;        // false for lines and points without normals: emissive (0 then) + diffuse
-uniform bool uHasNormals; // else flat normals from the screen-space derivatives
-uniform bool uHasColors;  // vertex colours replace the diffuse colour
-uniform bool uTwoSided;   // a face seen from behind is lit on that side (ShapeHints)
-uniform bool uCullByNormal; // polygon edges drawn as lines: drop a back face's (its normal)
+// LIT: false for lines and points without normals: emissive (0 then) + diffuse.
+// HAS_NORMALS: else flat normals from the screen-space derivatives.
+// HAS_COLORS: vertex colours replace the diffuse colour.
+// TWO_SIDED: a face seen from behind is lit on that side (ShapeHints).
+// CULL_BY_NORMAL: polygon edges drawn as lines: drop a back face's (by its normal).
 #ifdef INSTANCED
 flat in vec4 vEmissiveShininess;
 flat in vec3 vAmbient;
@@ -73,22 +158,24 @@ uniform mat4 uView;
 uniform vec4 uSpot[MAX_LIGHTS];        // direction the spot points (xyz), cos of cut-off (w)
 uniform float uSpotExponent[MAX_LIGHTS];
 uniform vec3 uAttenuation;             // squared, linear, constant (SoEnvironment)
-// Texture: -1 none, 0 MODULATE, 1 DECAL, 2 BLEND, 3 REPLACE.
+// Texture (TEXTURED): 0 MODULATE, 1 DECAL, 2 BLEND, 3 REPLACE; SPHERE_MAP:
+// TextureCoordinateEnvironment, coordinates from the reflection.
 uniform int uTextureModel;
-uniform bool uSphereMap; // TextureCoordinateEnvironment: coordinates from the reflection
 uniform sampler2D uTexture;
 uniform vec3 uBlendColor;
-// Fog: 0 none, 1 HAZE, 2 FOG, 3 SMOKE.
+// Fog (FOG): 1 HAZE, 2 FOG, 3 SMOKE.
 uniform int uFogType;
 uniform vec3 uFogColor;
 uniform float uFogVisibility;
 
 out vec4 fragColor;
+)GLSL";
 
+inline constexpr const char* shapeFragmentMain = R"GLSL(
 vec4 textured(vec4 lit, vec3 N) {
-    if (uTextureModel < 0) return lit;
+    if (!TEXTURED) return lit;
     vec2 st = vTexCoord;
-    if (uSphereMap) {
+    if (SPHERE_MAP) {
         vec3 u = normalize((uView * vec4(vWorldPosition, 1.0)).xyz);
         vec3 n = normalize(mat3(uView) * N);
         vec3 r = reflect(u, n);
@@ -103,7 +190,7 @@ vec4 textured(vec4 lit, vec3 N) {
 }
 
 vec3 fogged(vec3 color) {
-    if (uFogType == 0) return color;
+    if (!FOG) return color;
     float v = uFogVisibility;
     float d = max(vEyeDistance, 0.0);
     float f; // how much of the colour remains
@@ -114,45 +201,36 @@ vec3 fogged(vec3 color) {
 }
 
 void main() {
-    vec3 diffuse = uHasColors ? vColor.rgb : uDiffuse;
-    // Per-vertex colours carry their material's alpha (ShapeState's materialColor).
-    float alpha = uHasColors ? vColor.a : uAlpha;
     vec3 V = towardsViewer();
-    if (uCullByNormal && dot(vWorldNormal, V) < 0.0) discard;
-    vec3 N = uHasNormals ? vWorldNormal : vec3(0.0);
+    if (CULL_BY_NORMAL && dot(vWorldNormal, V) < 0.0) discard;
+#ifdef VERTEX_LIGHTING
+    // Lit per vertex only with nonzero normals (VertexLighting.h): none is derived here.
+    vec3 N = vWorldNormal;
+    bool back = TWO_SIDED && dot(N, V) < 0.0;
+    if (back) N = -N;
+    if (SPHERE_MAP) N = normalize(N);
+    vec4 lit = textured(back ? vBackColor : vFrontColor, N);
+#else
+    vec3 diffuse = HAS_COLORS ? vColor.rgb : uDiffuse;
+    // Per-vertex colours carry their material's alpha (ShapeState's materialColor).
+    float alpha = HAS_COLORS ? vColor.a : uAlpha;
+    vec3 N = HAS_NORMALS ? vWorldNormal : vec3(0.0);
     bool derived = dot(N, N) <= 0.0;
     if (derived) N = cross(dFdx(vWorldPosition), dFdy(vWorldPosition));
     N = dot(N, N) > 0.0 ? normalize(N) : V;
     // Two-sided lighting lights the side facing the viewer. One-sided (Inventor's default,
     // as Coin) keeps the given normal, so the inside of an open mesh is dark; a normal derived
     // from the screen has no side and always faces the viewer.
-    if ((uTwoSided || derived) && dot(N, V) < 0.0) N = -N;
-    if (!uLit) {
+    if ((TWO_SIDED || derived) && dot(N, V) < 0.0) N = -N;
+    if (!LIT) {
         vec4 unlit = textured(vec4(uEmissive + diffuse, alpha), N);
         fragColor = vec4(fogged(unlit.rgb), unlit.a);
         return;
     }
-
-    vec3 color = uEmissive + uAmbient;
-    for (int i = 0; i < uLightCount; ++i) {
-        vec3 toLight = lightVector(i);
-        vec3 L = normalize(toLight);
-        float NdotL = dot(N, L);
-        if (NdotL <= 0.0) continue; // no diffuse and, as in OpenGL, no specular
-        float strength = 1.0;
-        if (uLightVector[i].w != 0.0) {
-            float d = length(toLight);
-            float a = uAttenuation.z + uAttenuation.y * d + uAttenuation.x * d * d;
-            strength = a > 0.0 ? 1.0 / a : 1.0;
-            float spotCos = dot(-L, uSpot[i].xyz);
-            if (spotCos < uSpot[i].w) continue; // outside the cone
-            if (uSpotExponent[i] > 0.0) strength *= pow(max(spotCos, 0.0), uSpotExponent[i]);
-        }
-        float NdotH = max(dot(N, normalize(L + V)), 0.0);
-        float specular = NdotH > 0.0 ? pow(NdotH, uShininess) : (uShininess == 0.0 ? 1.0 : 0.0);
-        color += strength * uLightColor[i] * (diffuse * NdotL + uSpecular * specular);
-    }
+    vec3 color = uEmissive + uAmbient + sumOfLights(vWorldPosition, N, V, diffuse, uSpecular,
+                                                    uShininess);
     vec4 lit = textured(vec4(color, alpha), N);
+#endif
     fragColor = vec4(fogged(lit.rgb), lit.a);
 }
 )GLSL";

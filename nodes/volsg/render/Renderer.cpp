@@ -207,6 +207,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     static std::atomic<std::uint64_t> renders{0};
     frame.renderSerial = ++renders;
     shapes.setBatching(options.debug.batchShapes);
+    shapes.setLighting(options.debug.shapeLighting);
     RenderAction action(frame);
     for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
         // The multisampled opaque pass is resolved into the target for everything after it.
@@ -241,6 +242,8 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     stats.batches = shapes.batchesLastFrame();
     stats.replayedShapes = frame.replayedShapes;
     stats.culledSeparators = frame.culledSeparators;
+    stats.litShapes = shapes.litLastFrame();
+    stats.vertexLitShapes = shapes.vertexLitLastFrame();
     stats.batchedShapes = shapes.batchedShapesLastFrame();
     stats.meshBytes = cache.shared<SharedMeshes>().bytes();
     stats.instanceBytes = shapes.instanceBytes();
