@@ -8,6 +8,7 @@
 #include <volsg/gl/Framebuffer.h>
 #include <volsg/gl/GlDebug.h>
 #include <volsg/gl/Renderbuffer.h>
+#include <volsg/io/SceneReader.h>
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/Cube.h>
 #include <volsg/nodes/Light.h>
@@ -17,8 +18,10 @@
 #include <volsg/nodes/Transform.h>
 #include <volsg/render/Renderer.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 using namespace volsg;
 
@@ -214,6 +217,87 @@ TEST_CASE("renderToBoundFramebuffer blits the frame into the framebuffer bound b
     CHECK(int(inside[2]) == 191);
     CHECK(int(outside[0]) == 26); // background 0.1 * 255 = 25.5 rounds to 26 (GL rounds to nearest)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+namespace {
+
+/// Renders `root` into an 8-bit framebuffer standing in for a window, as the viewer does, and
+/// returns the window's bytes (RGBA, bottom row first).
+std::vector<unsigned char> renderToWindow(Renderer& renderer, Node& root, int size) {
+    Renderbuffer color(GL_RGBA8, size, size);
+    Framebuffer window = Framebuffer::create();
+    window.attach(GL_COLOR_ATTACHMENT0, color);
+    window.requireComplete("window stand-in");
+    window.bind();
+    renderer.renderToBoundFramebuffer(root, smallOptions(size, size));
+    std::vector<unsigned char> bytes(std::size_t(size) * std::size_t(size) * 4);
+    glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return bytes;
+}
+
+/// The largest difference, in 1/255 steps, between the window's bytes and the float image
+/// rounded as GL rounds.
+int largestStep(const std::vector<unsigned char>& window, const Image& image) {
+    int largest = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const int expected =
+                    int(std::lround(std::clamp(image.at(x, y)[c], 0.0f, 1.0f) * 255.0f));
+                const std::size_t at = (std::size_t(image.height - 1 - y) * image.width + x) * 4;
+                largest = std::max(largest, std::abs(int(window[at + std::size_t(c)]) - expected));
+            }
+    return largest;
+}
+
+/// Whether every colour of `image` is a whole number of 1/255 steps (an 8-bit target's).
+bool onByteSteps(const Image& image) {
+    for (const glm::vec4& p : image.pixels)
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(p[c] * 255.0f - std::round(p[c] * 255.0f)) > 1e-3f) return false;
+    return true;
+}
+
+} // namespace
+
+TEST_CASE("a window frame without volumes is drawn in 8 bits, one with a volume in float") {
+    OSMesaContext context;
+    enableGlErrorChecking();
+    Renderer renderer;
+    constexpr int size = 48;
+    // Lit, specular and transparent shapes: the 8-bit frame agrees with the float one rounded
+    // (a transparent blend rounds its result once more: one step at most). The colours stay
+    // within [0, 1]: beyond it the float target would carry what a window's clamps (as Coin's).
+    ref_ptr<Node> shapes = readSceneFromString(
+        "#Inventor V2.1 ascii\nSeparator { PerspectiveCamera { position 0 0 6 }\n"
+        "  Material { diffuseColor 0.5 0.3 0.2 specularColor 0.4 0.4 0.4 shininess 0.3 }\n"
+        "  Sphere { }\n"
+        "  Material { diffuseColor 0.2 0.5 0.9 transparency 0.4 }\n"
+        "  Translation { translation 0.5 0.3 1.2 } Cube { width 1.2 height 1 depth 0.3 } }\n");
+    const std::vector<unsigned char> window = renderToWindow(renderer, *shapes, size);
+    CHECK(onByteSteps(renderer.readImage())); // the 8-bit target
+    const Image exact = renderer.render(*shapes, smallOptions(size, size));
+    CHECK(!onByteSteps(exact)); // render() reads float pixels: the float target
+    CHECK(largestStep(window, exact) <= 1);
+
+    // A volume needs float accumulation: its window frame starts again on the float target.
+    ref_ptr<Node> volume = readSceneFromString(
+        "#Inventor V2.1 ascii\nSeparator { OrthographicCamera { position 0 0 5 height 2.4 }\n"
+        "  VolumeData { generator SOFT_SPHERE dimensions 32 32 32 "
+        "spacing 0.0625 0.0625 0.0625 }\n"
+        "  TransferFunction { alpha [ 0 0, 1 0.05 ] }\n"
+        "  Volume { numPlanes 256 }\n"
+        "  Material { diffuseColor 0 0 0 ambientColor 0 0 0 emissiveColor 1 0.5 0 }\n"
+        "  Translation { translation 0 0 -2 } Cube { width 0.5 height 0.5 depth 0.5 } }\n");
+    const std::vector<unsigned char> volumeWindow = renderToWindow(renderer, *volume, size);
+    CHECK(!onByteSteps(renderer.readImage()));
+    const Image volumeExact = renderer.render(*volume, smallOptions(size, size));
+    CHECK(largestStep(volumeWindow, volumeExact) <= 1);
+    // And it is back on 8 bits when the volume is gone.
+    renderToWindow(renderer, *shapes, size);
+    renderToWindow(renderer, *shapes, size);
+    CHECK(onByteSteps(renderer.readImage()));
 }
 
 TEST_CASE("without a camera the scene is seen whole from +Z") {

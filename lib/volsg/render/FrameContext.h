@@ -65,8 +65,8 @@ struct RenderDebug {
     int max3DTextureSize = 0;
     /// ShearWarpVolume: the widest vector kernels this CPU runs (false: the scalar ones).
     bool vectorKernels = true;
-    /// Frames without volumes draw into an 8-bit target, as Coin's window does (off by
-    /// default: it quantises colours to 1/255, and saved nothing measurable on llvmpipe).
+    /// Frames without volumes or sections draw into an 8-bit target even when the caller
+    /// reads float pixels (by default only where the output keeps 8 bits: RenderOptions).
     bool byteTarget = false;
     /// Separators whose subgraph does not change replay what they drew (render caches).
     bool renderCaching = true;

@@ -48,7 +48,8 @@ const ShapeRenderer::Locations& ShapeRenderer::useVariant(const DrawItem& item, 
                           item.cull && drawsOutline(item),
                           item.textureModel >= 0,
                           item.textureModel >= 0 && item.sphereMap,
-                          item.environment.fogType != 0};
+                          item.environment.fogType != 0,
+                          item.scope.clipPlaneCount == 0};
     unsigned key = 0;
     for (std::size_t i = 0; i < std::size(flags); ++i)
         key |= unsigned(flags[i]) << i;
@@ -60,6 +61,8 @@ const ShapeRenderer::Locations& ShapeRenderer::useVariant(const DrawItem& item, 
             "TEXTURED", "SPHERE_MAP",  "FOG"};
         std::string defines = instanced ? "#define INSTANCED\n" : "";
         if (item.vertexLighting) defines += "#define VERTEX_LIGHTING\n";
+        // No clip plane in scope: the vertex stage writes no clip distance (none is enabled).
+        if (flags[10]) defines += "#define NO_CLIP_PLANES\n";
         for (std::size_t i = 0; i < std::size(names); ++i)
             defines += std::string("#define ") + names[i] + (flags[i + 2] ? " true\n" : " false\n");
         // The vertex stage sums lights only per vertex (its light uniforms exist only then).

@@ -9,7 +9,8 @@ namespace volsg::shaders {
 /// first texture coordinates 3), the model (a uniform, or with INSTANCED defined a per-instance
 /// attribute at 4), normal and view-projection matrices and the clip planes; transformVertex()
 /// writes the world position and normal, gl_ClipDistance and gl_Position, and returns the world
-/// position. The program sets vColor.
+/// position (and, unless NO_CLIP_PLANES is defined, the clip distances). The program sets
+/// vColor.
 inline constexpr const char* surfaceVertex = R"GLSL(
 #ifdef INSTANCED
 layout(location = 4) in mat4 aModel; // per instance (locations 4 to 7)
@@ -40,10 +41,12 @@ vec4 transformVertex() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vWorldPosition = world.xyz;
     vWorldNormal = uNormalMatrix * aNormal;
+#ifndef NO_CLIP_PLANES
     // Planes beyond the count read 1: harmless if a shape left their switch on.
     for (int i = 0; i < MAX_CLIP_PLANES; ++i)
         gl_ClipDistance[i] =
             i < uClipPlaneCount ? dot(uClipPlanes[i].xyz, world.xyz) - uClipPlanes[i].w : 1.0;
+#endif
     gl_Position = uViewProjection * world;
     return world;
 }

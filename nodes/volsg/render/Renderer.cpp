@@ -121,6 +121,25 @@ private:
     GLint draw_ = 0, read_ = 0;
 };
 
+/// The bits of red in the colour buffer `framebuffer` draws into (0: the window's); 32 when
+/// GL does not say.
+int drawBufferBits(GLuint framebuffer) {
+    GLint buffer = GL_NONE;
+    glGetIntegerv(GL_DRAW_BUFFER0, &buffer);
+    // The default framebuffer names its buffers GL_BACK and GL_FRONT; their attachments are
+    // the left ones.
+    if (framebuffer == 0 && buffer == GL_BACK) buffer = GL_BACK_LEFT;
+    if (framebuffer == 0 && buffer == GL_FRONT) buffer = GL_FRONT_LEFT;
+    if (buffer == GL_NONE) return 32;
+    GLint bits = 32;
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GLenum(buffer),
+                                          GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE, &bits);
+    // A query GL refuses leaves an error behind; it must not reach the caller's next check.
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    return bits > 0 ? bits : 32;
+}
+
 /// GL's row 0 is the bottom; the Image's is the top.
 template <class T> void flipRows(std::vector<T>& pixels, int width, int height) {
     const std::size_t w = std::size_t(width);
@@ -181,7 +200,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
                                     : glm::dvec4(glm::dvec3(eyeToWorld[3]), 1.0);
     view.headlight = !survey.hasLight();
 
-    const bool floatColor = floatTarget || !options.debug.byteTarget;
+    const bool floatColor = floatTarget || !(options.eightBitOutput || options.debug.byteTarget);
     target.resize(options.width, options.height, floatColor);
     const bool multisample = target.setMultisample(options.samples) > 1;
     if (multisample)
@@ -332,7 +351,9 @@ void Renderer::readImage(Image& into) const {
 
 void Renderer::renderToBoundFramebuffer(Node& root, const RenderOptions& options) {
     const BoundFramebuffers caller;
-    impl_->drawFrame(root, options);
+    RenderOptions o = options;
+    o.eightBitOutput = o.eightBitOutput || drawBufferBits(caller.draw()) <= 8;
+    impl_->drawFrame(root, o);
     impl_->target.framebuffer().bind(GL_READ_FRAMEBUFFER);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, caller.draw());

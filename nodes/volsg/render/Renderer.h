@@ -31,6 +31,12 @@ struct RenderOptions {
     /// are resolved into the frame's target before the volumes, which then composite against
     /// the resolved depth; the transparent pass is drawn single-sampled. 0 or 1: off.
     int samples = 0;
+    /// The caller keeps 8 bits per channel of the frame (a window, a PNG): a frame without
+    /// volumes or sections then draws into an 8-bit target, as Coin's window does, which
+    /// loses nothing the output keeps and is cheaper to clear, shade and blend on a software
+    /// rasteriser (the colour of each blend is rounded to 1/255 then, as in Coin's). Set by
+    /// renderToBoundFramebuffer when the bound framebuffer has 8 bits or fewer per channel.
+    bool eightBitOutput = false;
     /// Optimisations switched off, to measure them (volsg-bench) or test fallbacks.
     RenderDebug debug;
 };
@@ -82,7 +88,8 @@ public:
     Image readImage() const;
     /// The same into `into` (storage reused when it has the size already).
     void readImage(Image& into) const;
-    /// Renders into the framebuffer bound now (a window's back buffer), same image.
+    /// Renders into the framebuffer bound now (a window's back buffer), same image; with
+    /// RenderOptions::eightBitOutput when that framebuffer keeps at most 8 bits per channel.
     void renderToBoundFramebuffer(Node& root, const RenderOptions& options);
 
     /// The depth buffer of the last frame in window coordinates ([0,1], 1 where nothing was
