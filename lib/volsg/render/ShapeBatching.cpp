@@ -61,6 +61,7 @@ void ShapeRenderer::batch(const GpuMesh& gpu, const ShapeLook& look) {
     key.pointSize = look.pointSize;
     key.lit = lit;
     key.vertexLighting = lit && lightsPerVertex(gpu, look);
+    key.specularOn = look.material.specular != glm::vec3(0.0f);
     if (lit) ++litLastFrame_;
     if (key.vertexLighting) ++vertexLitLastFrame_;
     key.cull = cullsBackFaces(gpu, look);

@@ -4,6 +4,7 @@
 #include <volsg/render/ShapeShaders.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -49,10 +50,18 @@ const ShapeRenderer::Locations& ShapeRenderer::useVariant(const DrawItem& item, 
                           item.textureModel >= 0,
                           item.textureModel >= 0 && item.sphereMap,
                           item.environment.fogType != 0,
-                          item.scope.clipPlaneCount == 0};
+                          item.scope.clipPlaneCount == 0,
+                          item.specularOn,
+                          gpu.hasNormals && std::isfinite(gpu.shading.normal)};
+    const int lights = item.scope.lightCount;
+    bool positional = false;
+    for (int i = 0; i < lights; ++i)
+        positional = positional || item.scope.lightVectors[std::size_t(i)].w != 0.0f;
     unsigned key = 0;
     for (std::size_t i = 0; i < std::size(flags); ++i)
         key |= unsigned(flags[i]) << i;
+    key |= unsigned(positional) << std::size(flags);
+    key |= unsigned(lights) << (std::size(flags) + 1); // 0 to kMaxLights
     auto [found, added] = variants_.try_emplace(key);
     Variant& v = found->second;
     if (added) {
@@ -63,6 +72,10 @@ const ShapeRenderer::Locations& ShapeRenderer::useVariant(const DrawItem& item, 
         if (item.vertexLighting) defines += "#define VERTEX_LIGHTING\n";
         // No clip plane in scope: the vertex stage writes no clip distance (none is enabled).
         if (flags[10]) defines += "#define NO_CLIP_PLANES\n";
+        defines += std::string("#define SPECULAR ") + (flags[11] ? "true\n" : "false\n");
+        defines += std::string("#define NONZERO_NORMALS ") + (flags[12] ? "true\n" : "false\n");
+        defines += "#define LIGHT_COUNT " + std::to_string(lights) + "\n";
+        defines += std::string("#define POSITIONAL_LIGHTS ") + (positional ? "true\n" : "false\n");
         for (std::size_t i = 0; i < std::size(names); ++i)
             defines += std::string("#define ") + names[i] + (flags[i + 2] ? " true\n" : " false\n");
         // The vertex stage sums lights only per vertex (its light uniforms exist only then).
@@ -164,6 +177,7 @@ void ShapeRenderer::fill(const GpuMesh& gpu, const ShapeLook& look, DrawItem& it
     item.ambient = m.ambient * look.environment.ambient;
     item.diffuse = m.diffuse;
     item.specular = m.specular;
+    item.specularOn = m.specular != glm::vec3(0.0f);
     item.shininess = m.shininess * 128.0f;
     item.alpha = 1.0f - m.transparency;
     // Lines and points are lit only with normals of their own; without, Coin draws them in

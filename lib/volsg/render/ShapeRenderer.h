@@ -167,6 +167,7 @@ private:
         float shininess = 0.0f, alpha = 1.0f;
         bool lit = true;
         bool vertexLighting = false; ///< the lights summed per vertex
+        bool specularOn = false;     ///< the specular colour is not black (all of a batch's)
         ShapeLook::Style style = ShapeLook::Style::Filled;
         float lineWidth = 1.0f, pointSize = 1.0f;
         bool cull = false, frontClockwise = false, twoSided = false;
@@ -209,7 +210,7 @@ private:
         int scope; ///< index into scopes_
         int textureModel, style;
         float lineWidth, pointSize;
-        std::uint8_t lit, vertexLighting, cull, frontClockwise, sphereMap, twoSided;
+        std::uint8_t lit, vertexLighting, specularOn, cull, frontClockwise, sphereMap, twoSided;
         glm::vec3 blendColor;
         glm::mat4 textureMatrix;
         glm::vec3 attenuation, fogColor;

@@ -14,17 +14,19 @@ namespace volsg::shaders {
 
 /// The sum over the lights in scope at world point P with unit normal N and unit V (towards
 /// the viewer), without emissive and ambient (ShapeRenderer.h gives the model). Uses
-/// uLightCount, uLightVector, uLightColor, uSpot, uSpotExponent and uAttenuation.
+/// LIGHT_COUNT, POSITIONAL_LIGHTS, SPECULAR, uLightVector, uLightColor, uSpot, uSpotExponent and uAttenuation.
 inline constexpr const char* shapeLighting = R"GLSL(
 vec3 sumOfLights(vec3 P, vec3 N, vec3 V, vec3 diffuse, vec3 specularColor, float shininess) {
     vec3 color = vec3(0.0);
-    for (int i = 0; i < uLightCount; ++i) {
+    // LIGHT_COUNT and POSITIONAL_LIGHTS are the draw's (ShapeRenderer::useVariant): a loop
+    // of known length, and no attenuation or cone code for directional lights alone.
+    for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec3 toLight = uLightVector[i].xyz - P * uLightVector[i].w;
         vec3 L = normalize(toLight);
         float NdotL = dot(N, L);
         if (NdotL <= 0.0) continue; // no diffuse and, as in OpenGL, no specular
         float strength = 1.0;
-        if (uLightVector[i].w != 0.0) {
+        if (POSITIONAL_LIGHTS && uLightVector[i].w != 0.0) {
             float d = length(toLight);
             float a = uAttenuation.z + uAttenuation.y * d + uAttenuation.x * d * d;
             strength = a > 0.0 ? 1.0 / a : 1.0;
@@ -32,9 +34,14 @@ vec3 sumOfLights(vec3 P, vec3 N, vec3 V, vec3 diffuse, vec3 specularColor, float
             if (spotCos < uSpot[i].w) continue; // outside the cone
             if (uSpotExponent[i] > 0.0) strength *= pow(max(spotCos, 0.0), uSpotExponent[i]);
         }
-        float NdotH = max(dot(N, normalize(L + V)), 0.0);
-        float specular = NdotH > 0.0 ? pow(NdotH, shininess) : (shininess == 0.0 ? 1.0 : 0.0);
-        color += strength * uLightColor[i] * (diffuse * NdotL + specularColor * specular);
+        vec3 lit = diffuse * NdotL;
+        if (SPECULAR) { // false: the specular colour is black, no power to take
+            float NdotH = max(dot(N, normalize(L + V)), 0.0);
+            float specular =
+                NdotH > 0.0 ? pow(NdotH, shininess) : (shininess == 0.0 ? 1.0 : 0.0);
+            lit += specularColor * specular;
+        }
+        color += strength * uLightColor[i] * lit;
     }
     return color;
 }
@@ -131,7 +138,9 @@ in vec4 vBackColor;
 in float vEyeDistance;
 
 // LIT: false for lines and points without normals: emissive (0 then) + diffuse.
-// HAS_NORMALS: else flat normals from the screen-space derivatives.
+// HAS_NORMALS: else flat normals from the screen-space derivatives (NONZERO_NORMALS: none of
+// them is zero).
+// SPECULAR: the specular colour is not black.
 // HAS_COLORS: vertex colours replace the diffuse colour.
 // TWO_SIDED: a face seen from behind is lit on that side (ShapeHints).
 // CULL_BY_NORMAL: polygon edges drawn as lines: drop a back face's (by its normal).
@@ -215,7 +224,8 @@ void main() {
     // Per-vertex colours carry their material's alpha (ShapeState's materialColor).
     float alpha = HAS_COLORS ? vColor.a : uAlpha;
     vec3 N = HAS_NORMALS ? vWorldNormal : vec3(0.0);
-    bool derived = dot(N, N) <= 0.0;
+    // NONZERO_NORMALS: the mesh has no zero normal, none is derived from the screen.
+    bool derived = !NONZERO_NORMALS && dot(N, N) <= 0.0;
     if (derived) N = cross(dFdx(vWorldPosition), dFdy(vWorldPosition));
     N = dot(N, N) > 0.0 ? normalize(N) : V;
     // Two-sided lighting lights the side facing the viewer. One-sided (Inventor's default,
