@@ -6,6 +6,18 @@
 if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
   message(FATAL_ERROR "VOLSG_FUZZ=ON needs clang: configure with CC=clang CXX=clang++")
 endif()
-add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+# VOLSG_FUZZ_COVERAGE: "full" is libFuzzer's own instrumentation (counters, comparison and
+# indirect-call tracing), for long runs; "counters" keeps the edge counters and their table
+# only, which still guide libFuzzer, without a callback on every comparison (the sanitizer
+# suite that shares the build in CI runs that much faster).
+set(VOLSG_FUZZ_COVERAGE "full" CACHE STRING "libFuzzer instrumentation: full or counters")
+if(VOLSG_FUZZ_COVERAGE STREQUAL "counters")
+  add_compile_options(-fsanitize-coverage=inline-8bit-counters,pc-table)
+elseif(VOLSG_FUZZ_COVERAGE STREQUAL "full")
+  add_compile_options(-fsanitize=fuzzer-no-link)
+else()
+  message(FATAL_ERROR "VOLSG_FUZZ_COVERAGE is full or counters, not '${VOLSG_FUZZ_COVERAGE}'")
+endif()
+add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer
   -fno-sanitize-recover=undefined)
 add_link_options(-fsanitize=address,undefined)

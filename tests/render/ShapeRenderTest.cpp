@@ -367,6 +367,9 @@ TEST_CASE("the same node added twice under two Transforms draws twice") {
     CHECK(gl.renderer.stats().shapeDraws == 1);
     CHECK(gl.renderer.stats().batchedShapes == 2);
     CHECK(gl.renderer.stats().meshUploads == 1);
+    // The scene's vertex data counts the mesh for each shape; the GPU holds it once.
+    CHECK(gl.renderer.stats().meshBytes > 0);
+    CHECK(gl.renderer.stats().drawnMeshBytes == 2 * gl.renderer.stats().meshBytes);
 }
 
 TEST_CASE("a sphere under a DirectionalLight follows Lambert's law") {

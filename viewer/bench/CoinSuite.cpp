@@ -188,6 +188,9 @@ struct Row {
     double coinMs = 0.0, volsgMs = 0.0;
     double meanDifference = 0.0; ///< mean |Coin - volsg| over all pixels and RGB, 0..255
     std::size_t litShapes = 0, vertexLitShapes = 0; ///< volsg's last frame
+    /// volsg's GPU bytes for the shapes (shared meshes + per-instance buffer), and the
+    /// scene's vertex data drawn (each shape's mesh counted for each time it is drawn).
+    std::size_t gpuBytes = 0, vertexBytes = 0;
 };
 
 double meanDifference(const std::vector<unsigned char>& coin, const Image& volsg) {
@@ -237,6 +240,8 @@ Row runCase(const Case& c, const CoinSuiteSettings& st, const fs::path& dir) {
     Row row{c.name, coinMs.median(), volsgMs.median()};
     row.litShapes = volsg.stats().litShapes;
     row.vertexLitShapes = volsg.stats().vertexLitShapes;
+    row.gpuBytes = volsg.stats().meshBytes + volsg.stats().instanceBytes;
+    row.vertexBytes = volsg.stats().drawnMeshBytes;
     const Image image = volsg.image();
     coin.frameMs();
     const std::vector<unsigned char> coinPixels = coin.pixels();
@@ -263,8 +268,8 @@ int runCoinSuite(const CoinSuiteSettings& st) {
                 st.width, st.height, st.frames,
                 st.readBack ? "Renderer::render (read back)"
                             : "Renderer::renderToBoundFramebuffer (an 8-bit window) + glFinish");
-    std::printf("%-34s %10s %10s %8s %8s %13s\n", "case", "Coin ms", "volsg ms", "Coin/v", "diff",
-                "vertex-lit");
+    std::printf("%-34s %10s %10s %8s %8s %13s %17s\n", "case", "Coin ms", "volsg ms", "Coin/v",
+                "diff", "vertex-lit", "GPU/vertex KB");
     std::vector<double> ratios;
     int ran = 0;
     for (const Case& c : cases) {
@@ -274,8 +279,10 @@ int runCoinSuite(const CoinSuiteSettings& st) {
             ratios.push_back(ratio);
             const std::string lit =
                 std::to_string(row.vertexLitShapes) + "/" + std::to_string(row.litShapes);
-            std::printf("%-34s %10.3f %10.3f %8.2f %8.2f %13s\n", row.name.c_str(), row.coinMs,
-                        row.volsgMs, ratio, row.meanDifference, lit.c_str());
+            const std::string memory = std::to_string((row.gpuBytes + 512) / 1024) + "/" +
+                                       std::to_string((row.vertexBytes + 512) / 1024);
+            std::printf("%-34s %10.3f %10.3f %8.2f %8.2f %13s %17s\n", row.name.c_str(), row.coinMs,
+                        row.volsgMs, ratio, row.meanDifference, lit.c_str(), memory.c_str());
             std::fflush(stdout);
             ++ran;
         } catch (const std::exception& e) {

@@ -32,6 +32,12 @@ struct GpuMesh {
     ShadingSpread shading;             ///< what decides per-vertex lighting (VertexLighting.h)
     bool uploaded = false;
 
+    /// Bytes of its buffers on the GPU.
+    std::size_t bytes() const {
+        return positions.size() + normals.size() + colors.size() + texCoords.size() +
+               indices.size();
+    }
+
     /// Sends `mesh` to the GPU (the GL context must be current). Throws Error for an index
     /// beyond the positions, which would make the draw read outside the buffers.
     void upload(const Mesh& mesh);

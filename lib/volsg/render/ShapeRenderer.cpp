@@ -116,7 +116,7 @@ void ShapeRenderer::beginFrame(const RenderView& view) {
     view_ = view;
     transparentQueue_.clear();
     drawsLastFrame_ = 0;
-    vertexLitLastFrame_ = litLastFrame_ = 0;
+    vertexLitLastFrame_ = litLastFrame_ = submittedMeshBytes_ = 0;
     batchesLastFrame_ = batchedShapesLastFrame_ = 0;
     scopes_.clear();
     batches_.clear();
@@ -145,6 +145,7 @@ void ShapeRenderer::endFrame() {
 
 void ShapeRenderer::submit(const FrameContext& frame, const GpuMesh& gpu, const ShapeLook& look) {
     if (gpu.indexCount == 0 || look.style == ShapeLook::Style::Invisible) return;
+    if (frame.pass == RenderPass::Opaque) submittedMeshBytes_ += gpu.bytes(); // once a frame
     const bool transparent = look.material.transparency > 0.0f || gpu.hasTranslucentColors;
     if (frame.pass == RenderPass::Opaque && !transparent && batching_) {
         batch(gpu, look);

@@ -156,6 +156,9 @@ public:
     /// Shapes lit per vertex in this frame (of all lit shapes submitted).
     std::size_t vertexLitLastFrame() const { return vertexLitLastFrame_; }
     std::size_t litLastFrame() const { return litLastFrame_; }
+    /// The bytes the shapes submitted in this frame would take as meshes of their own (the
+    /// scene's vertex data, without sharing or instancing).
+    std::size_t submittedMeshBytesLastFrame() const { return submittedMeshBytes_; }
 
 private:
     /// Everything one draw needs, captured during traversal (transparent draws happen after).
@@ -263,7 +266,7 @@ private:
     glm::vec4 viewer_{0.0f, 0.0f, 1.0f, 0.0f};
     bool batching_ = true;
     RenderDebug::Lighting lighting_ = RenderDebug::Lighting::Automatic;
-    std::size_t vertexLitLastFrame_ = 0, litLastFrame_ = 0;
+    std::size_t vertexLitLastFrame_ = 0, litLastFrame_ = 0, submittedMeshBytes_ = 0;
     std::vector<Scope> scopes_;
     std::vector<Batch> batches_;
     std::unordered_map<std::uint64_t, std::size_t> batchIndex_; ///< key hash -> batches_

@@ -14,7 +14,8 @@ namespace volsg::shaders {
 
 /// The sum over the lights in scope at world point P with unit normal N and unit V (towards
 /// the viewer), without emissive and ambient (ShapeRenderer.h gives the model). Uses
-/// LIGHT_COUNT, POSITIONAL_LIGHTS, SPECULAR, uLightVector, uLightColor, uSpot, uSpotExponent and uAttenuation.
+/// LIGHT_COUNT, POSITIONAL_LIGHTS, SPECULAR, uLightVector, uLightColor, uSpot, uSpotExponent and
+/// uAttenuation.
 inline constexpr const char* shapeLighting = R"GLSL(
 vec3 sumOfLights(vec3 P, vec3 N, vec3 V, vec3 diffuse, vec3 specularColor, float shininess) {
     vec3 color = vec3(0.0);

@@ -46,11 +46,6 @@ bool sameContent(const Mesh& a, const Mesh& b) {
            sameBytes(a.texCoords, b.texCoords) && sameBytes(a.indices, b.indices);
 }
 
-std::size_t gpuBytes(const GpuMesh& g) {
-    return g.positions.size() + g.normals.size() + g.colors.size() + g.texCoords.size() +
-           g.indices.size();
-}
-
 } // namespace
 
 std::shared_ptr<GpuMesh> SharedMeshes::find(const Mesh& mesh, ShapeRenderer& shapes) {
@@ -83,7 +78,7 @@ std::size_t SharedMeshes::count() const {
 std::size_t SharedMeshes::bytes() const {
     std::size_t n = 0;
     for (const auto& kv : entries_)
-        if (const auto live = kv.second.gpu.lock()) n += gpuBytes(*live);
+        if (const auto live = kv.second.gpu.lock()) n += live->bytes();
     return n;
 }
 

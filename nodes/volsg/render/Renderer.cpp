@@ -266,6 +266,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     stats.batchedShapes = shapes.batchedShapesLastFrame();
     stats.meshBytes = cache.shared<SharedMeshes>().bytes();
     stats.instanceBytes = shapes.instanceBytes();
+    stats.drawnMeshBytes = shapes.submittedMeshBytesLastFrame();
 }
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {

@@ -57,6 +57,9 @@ struct RenderStats {
     std::size_t vertexLitShapes = 0;  ///< of those, lit per vertex (VertexLighting.h)
     std::size_t meshBytes = 0;        ///< GPU bytes of the (shared) shape meshes alive
     std::size_t instanceBytes = 0;    ///< GPU bytes of the per-instance buffer
+    /// The last frame's shapes' vertex data as if each had its own mesh (what meshBytes and
+    /// instanceBytes stand in for).
+    std::size_t drawnMeshBytes = 0;
 };
 
 /// Holds the GL resources (programs, meshes, targets) of one context across frames. Create
