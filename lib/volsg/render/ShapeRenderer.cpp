@@ -52,7 +52,8 @@ const ShapeRenderer::Locations& ShapeRenderer::useVariant(const DrawItem& item, 
                           item.environment.fogType != 0,
                           item.scope.clipPlaneCount == 0,
                           item.specularOn,
-                          gpu.hasNormals && std::isfinite(gpu.shading.normal)};
+                          gpu.hasNormals && std::isfinite(gpu.shading.normal),
+                          view_.viewer.w == 0.0};
     const int lights = item.scope.lightCount;
     bool positional = false;
     for (int i = 0; i < lights; ++i)
@@ -74,6 +75,7 @@ const ShapeRenderer::Locations& ShapeRenderer::useVariant(const DrawItem& item, 
         if (flags[10]) defines += "#define NO_CLIP_PLANES\n";
         defines += std::string("#define SPECULAR ") + (flags[11] ? "true\n" : "false\n");
         defines += std::string("#define NONZERO_NORMALS ") + (flags[12] ? "true\n" : "false\n");
+        defines += std::string("#define ORTHOGRAPHIC ") + (flags[13] ? "true\n" : "false\n");
         defines += "#define LIGHT_COUNT " + std::to_string(lights) + "\n";
         defines += std::string("#define POSITIONAL_LIGHTS ") + (positional ? "true\n" : "false\n");
         for (std::size_t i = 0; i < std::size(names); ++i)

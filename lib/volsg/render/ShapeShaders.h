@@ -23,7 +23,8 @@ vec3 sumOfLights(vec3 P, vec3 N, vec3 V, vec3 diffuse, vec3 specularColor, float
     // of known length, and no attenuation or cone code for directional lights alone.
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec3 toLight = uLightVector[i].xyz - P * uLightVector[i].w;
-        vec3 L = normalize(toLight);
+        // Directional lights come unit length (RenderAction::lightsInScope).
+        vec3 L = POSITIONAL_LIGHTS ? normalize(toLight) : toLight;
         float NdotL = dot(N, L);
         if (NdotL <= 0.0) continue; // no diffuse and, as in OpenGL, no specular
         float strength = 1.0;
@@ -118,7 +119,8 @@ void main() {
 #ifdef VERTEX_LIGHTING
     // Chosen only for meshes with nonzero normals (VertexLighting.h).
     vec3 N = normalize(vWorldNormal);
-    vec3 V = normalize(uViewer.xyz - world.xyz * uViewer.w);
+    // ORTHOGRAPHIC: the viewer is a unit direction (Renderer).
+    vec3 V = ORTHOGRAPHIC ? uViewer.xyz : normalize(uViewer.xyz - world.xyz * uViewer.w);
     vec3 diffuse = HAS_COLORS ? aColor.rgb : mDiffuse;
     float alpha = HAS_COLORS ? aColor.a : mAlpha;
     vec3 base = mEmissive + mAmbient;
@@ -141,7 +143,7 @@ in float vEyeDistance;
 // LIT: false for lines and points without normals: emissive (0 then) + diffuse.
 // HAS_NORMALS: else flat normals from the screen-space derivatives (NONZERO_NORMALS: none of
 // them is zero).
-// SPECULAR: the specular colour is not black.
+// SPECULAR: the specular colour is not black. ORTHOGRAPHIC: the view's.
 // HAS_COLORS: vertex colours replace the diffuse colour.
 // TWO_SIDED: a face seen from behind is lit on that side (ShapeHints).
 // CULL_BY_NORMAL: polygon edges drawn as lines: drop a back face's (by its normal).
@@ -211,7 +213,7 @@ vec3 fogged(vec3 color) {
 }
 
 void main() {
-    vec3 V = towardsViewer();
+    vec3 V = ORTHOGRAPHIC ? uViewer.xyz : towardsViewer();
     if (CULL_BY_NORMAL && dot(vWorldNormal, V) < 0.0) discard;
 #ifdef VERTEX_LIGHTING
     // Lit per vertex only with nonzero normals (VertexLighting.h): none is derived here.
