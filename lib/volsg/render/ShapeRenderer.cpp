@@ -40,46 +40,42 @@ ShapeRenderer::ShapeRenderer() {
 
 const ShapeRenderer::Locations& ShapeRenderer::useVariant(const DrawItem& item, bool instanced) {
     const GpuMesh& gpu = *item.mesh;
-    const bool flags[] = {instanced,
-                          item.vertexLighting,
-                          item.lit,
-                          gpu.hasNormals,
-                          gpu.hasColors,
-                          item.twoSided,
-                          item.cull && drawsOutline(item),
-                          item.textureModel >= 0,
-                          item.textureModel >= 0 && item.sphereMap,
-                          item.environment.fogType != 0,
-                          item.scope.clipPlaneCount == 0,
-                          item.specularOn,
-                          gpu.hasNormals && std::isfinite(gpu.shading.normal),
-                          view_.viewer.w == 0.0};
     const int lights = item.scope.lightCount;
     bool positional = false;
     for (int i = 0; i < lights; ++i)
         positional = positional || item.scope.lightVectors[std::size_t(i)].w != 0.0f;
-    unsigned key = 0;
-    for (std::size_t i = 0; i < std::size(flags); ++i)
-        key |= unsigned(flags[i]) << i;
-    key |= unsigned(positional) << std::size(flags);
-    key |= unsigned(lights) << (std::size(flags) + 1); // 0 to kMaxLights
+    // The constants the program is specialised by (ShapeShaders.h), each defined true or
+    // false; the first three are tested with #ifdef as well, and defined only when true.
+    const std::pair<const char*, bool> constants[] = {
+        {"INSTANCED", instanced},
+        {"VERTEX_LIGHTING", item.vertexLighting},
+        // No clip plane in scope: the vertex stage writes no clip distance (none is enabled).
+        {"NO_CLIP_PLANES", item.scope.clipPlaneCount == 0},
+        {"LIT", item.lit},
+        {"HAS_NORMALS", gpu.hasNormals},
+        {"NONZERO_NORMALS", gpu.hasNormals && std::isfinite(gpu.shading.normal)},
+        {"HAS_COLORS", gpu.hasColors},
+        {"TWO_SIDED", item.twoSided},
+        {"CULL_BY_NORMAL", item.cull && drawsOutline(item)},
+        {"TEXTURED", item.textureModel >= 0},
+        {"SPHERE_MAP", item.textureModel >= 0 && item.sphereMap},
+        {"FOG", item.environment.fogType != 0},
+        {"SPECULAR", item.specularOn},
+        {"ORTHOGRAPHIC", view_.viewer.w == 0.0},
+        {"POSITIONAL_LIGHTS", positional}};
+    constexpr std::size_t kPresenceTested = 3;
+    unsigned key = unsigned(lights); // 0 to kMaxLights: four bits
+    for (std::size_t i = 0; i < std::size(constants); ++i)
+        key |= unsigned(constants[i].second) << (4 + i);
     auto [found, added] = variants_.try_emplace(key);
     Variant& v = found->second;
     if (added) {
-        static constexpr const char* names[] = {
-            "LIT",      "HAS_NORMALS", "HAS_COLORS", "TWO_SIDED", "CULL_BY_NORMAL",
-            "TEXTURED", "SPHERE_MAP",  "FOG"};
-        std::string defines = instanced ? "#define INSTANCED\n" : "";
-        if (item.vertexLighting) defines += "#define VERTEX_LIGHTING\n";
-        // No clip plane in scope: the vertex stage writes no clip distance (none is enabled).
-        if (flags[10]) defines += "#define NO_CLIP_PLANES\n";
-        defines += std::string("#define SPECULAR ") + (flags[11] ? "true\n" : "false\n");
-        defines += std::string("#define NONZERO_NORMALS ") + (flags[12] ? "true\n" : "false\n");
-        defines += std::string("#define ORTHOGRAPHIC ") + (flags[13] ? "true\n" : "false\n");
-        defines += "#define LIGHT_COUNT " + std::to_string(lights) + "\n";
-        defines += std::string("#define POSITIONAL_LIGHTS ") + (positional ? "true\n" : "false\n");
-        for (std::size_t i = 0; i < std::size(names); ++i)
-            defines += std::string("#define ") + names[i] + (flags[i + 2] ? " true\n" : " false\n");
+        std::string defines = "#define LIGHT_COUNT " + std::to_string(lights) + "\n";
+        for (std::size_t i = 0; i < std::size(constants); ++i) {
+            const auto& [name, on] = constants[i];
+            if (i < kPresenceTested && !on) continue;
+            defines += std::string("#define ") + name + (on ? " true\n" : " false\n");
+        }
         // The vertex stage sums lights only per vertex (its light uniforms exist only then).
         const std::string vertex = std::string(shaders::shapeVertex) +
                                    (item.vertexLighting ? shaders::shapeLighting : "") +

@@ -93,14 +93,15 @@ double predictVertexLightingError(const VertexLightingCase& c) {
     const double edge = double(c.spread.longestEdge) * largest;
     const glm::dvec3 centre = glm::dvec3(c.model * glm::dvec4(c.bounds.center(), 1.0));
     const double radius = 0.5 * glm::length(c.bounds.size()) * largest;
-    // How far the direction to a point turns across the longest edge, seen from outside the
-    // bounds; a point inside them sees directions turn all the way.
-    const auto turnFrom = [&](const glm::dvec3& point, double& distance) {
-        distance = glm::distance(point, centre) - radius;
+    // The nearest a point comes to the bounds (<= 0 inside them), and how far the direction
+    // to it turns across the longest edge from there (all the way from inside).
+    const auto distanceTo = [&](const glm::dvec3& point) {
+        return glm::distance(point, centre) - radius;
+    };
+    const auto turnAt = [edge](double distance) {
         return distance > 0.0 ? edge / distance : kInfinite;
     };
-    double viewAngle = 0.0, unused = 0.0;
-    if (c.viewer.w != 0.0) viewAngle = turnFrom(glm::dvec3(c.viewer), unused);
+    const double viewAngle = c.viewer.w != 0.0 ? turnAt(distanceTo(glm::dvec3(c.viewer))) : 0.0;
 
     const glm::dvec3 att(c.attenuation);
     const double diffuse = c.vertexColors ? 1.0 : maxChannel(c.diffuse);
@@ -111,8 +112,8 @@ double predictVertexLightingError(const VertexLightingCase& c) {
         if (l.vector.w != 0.0f && l.spotCosCutOff >= -1.0f) return kInfinite; // a cone's edge
         double strength = 1.0, lightAngle = 0.0;
         if (l.vector.w != 0.0f) {
-            double distance = 0.0;
-            lightAngle = turnFrom(glm::dvec3(l.vector), distance);
+            const double distance = distanceTo(glm::dvec3(l.vector));
+            lightAngle = turnAt(distance);
             if (!std::isfinite(lightAngle)) return kInfinite;
             if (att.x < 0.0 || att.y < 0.0 || att.z < 0.0) return kInfinite;
             // Nonnegative coefficients: the strength 1/a is largest at the nearest point.
