@@ -11,7 +11,9 @@
 #include <sstream>
 
 #include "ImageError.h"
+#include "PrintfFormat.h"
 #include "ReferenceViews.h"
+#include "Timing.h"
 #include <volsg/actions/SearchAction.h>
 #include <volsg/core/Error.h>
 #include <volsg/gl/GlLoader.h>
@@ -28,7 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kVolumeName = "NODE_SUITE_VOLUME";
+constexpr const char* kNodeSuiteVolume = "NODE_SUITE_VOLUME";
 
 struct NodeCase {
     const char* name;
@@ -36,18 +38,6 @@ struct NodeCase {
 };
 constexpr NodeCase kCases[] = {{"ml256", "node-marschner-lobb-256.iv"},
                                {"chest-ct", "node-chest-ct.iv"}};
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
-    return buffer;
-}
-
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
 
 double medianOf(std::vector<double> v) {
     Samples s;
@@ -69,9 +59,9 @@ LoadedCase loadCase(const NodeCase& c, const NodeSuiteSettings& st) {
     out.name = c.name;
     const fs::path file = fs::path(st.scenesDir) / c.file;
     out.root = readScene(file.string());
-    Node* named = findByName(*out.root, kVolumeName);
+    Node* named = findByName(*out.root, kNodeSuiteVolume);
     out.volume = named && named->isA<Volume>() ? static_cast<Volume*>(named) : nullptr;
-    if (!out.volume) throw Error(file.string() + " has no Volume named " + kVolumeName);
+    if (!out.volume) throw Error(file.string() + " has no Volume named " + kNodeSuiteVolume);
     const RenderOptions options = suiteOptions(st);
     out.views = makeOrbitViews(*out.root, options, st.frames, st.errorFrames);
     const std::vector<RayCastVolume> volumes = collectVolumes(*out.root);
@@ -98,11 +88,11 @@ std::string modeName(int mode) {
 std::string settingText(const NodeSetting& s) {
     std::string t = modeName(s.mode) +
                     (s.mode == Volume::DVR ? (s.lighting ? " lit" : " unlit") : std::string());
-    t += s.planesPerVoxel > 0.0 ? format(", %g planes/voxel", s.planesPerVoxel)
+    t += s.planesPerVoxel > 0.0 ? printfFormat(", %g planes/voxel", s.planesPerVoxel)
                                 : std::string(", auto planes");
     t += s.interactive ? ", interactive" : ", still";
     if (s.preIntegrated) t += ", pre-int";
-    if (s.samplesPerPlane > 1) t += format(", %g samples/plane", double(s.samplesPerPlane));
+    if (s.samplesPerPlane > 1) t += printfFormat(", %g samples/plane", double(s.samplesPerPlane));
     if (s.mode == Volume::MIP && !s.mipPeaks) t += ", no peaks";
     return t;
 }
@@ -181,7 +171,7 @@ void labelForPlot(BenchRow& row, const NodeSetting& setting) {
     row.series = setting.lighting ? std::string()
                                   : "slicing " + modeName(setting.mode) +
                                         (setting.preIntegrated ? " pre-int" : "");
-    row.pointLabel = setting.planesPerVoxel > 0.0 ? format("%g", setting.planesPerVoxel)
+    row.pointLabel = setting.planesPerVoxel > 0.0 ? printfFormat("%g", setting.planesPerVoxel)
                                                   : std::string(setting.interactive ? "0.5" : "2");
 }
 
@@ -256,12 +246,12 @@ NodeRow measure(LoadedCase& c, const NodeSetting& setting, const Reference& refe
     const SlicingStats& stats = volume.slicingStats();
     row.memoryBytes = stats.textureBytes;
     row.memoryKind = "texture";
-    row.note = format("process CPU %.0f ms/frame; node CPU %.3f ms/frame (max %.3f)",
-                      out.processCpuMs, out.nodeCpuMs, out.nodeCpuMaxMs) +
-               format("; bricks %g of %g drawn, %g skipped as empty", stats.bricksDrawn,
-                      stats.bricksTotal, stats.bricksSkipped) +
-               format("; %g planes", stats.planes) +
-               format("; %.0f%% of cells empty", 100.0 * stats.emptyCells);
+    row.note = printfFormat("process CPU %.0f ms/frame; node CPU %.3f ms/frame (max %.3f)",
+                            out.processCpuMs, out.nodeCpuMs, out.nodeCpuMaxMs) +
+               printfFormat("; bricks %g of %g drawn, %g skipped as empty", stats.bricksDrawn,
+                            stats.bricksTotal, stats.bricksSkipped) +
+               printfFormat("; %g planes", stats.planes) +
+               printfFormat("; %.0f%% of cells empty", 100.0 * stats.emptyCells);
     if (setting.lighting) row.note += "; lit: error for sanity only (the reference does not shade)";
     return out;
 }
@@ -487,19 +477,19 @@ void printComparison(const std::vector<NodeRow>& ours, const std::vector<VtkRow>
             if (!lit && !mip) unlitChoice = best->setting;
             auto cell = [](const VtkRow* r, bool errorToo) {
                 if (!r) return std::string("| - | - | - ");
-                return format("| %.0f | %.0f ", r->ms, r->cpuMs) +
-                       (errorToo && r->hasError ? format("| %.4f ", r->rmse)
+                return printfFormat("| %.0f | %.0f ", r->ms, r->cpuMs) +
+                       (errorToo && r->hasError ? printfFormat("| %.4f ", r->rmse)
                                                 : std::string("| (sanity) "));
             };
             std::printf("| %s | %s | %s%s | %.0f | %.0f | %s ", caseName.c_str(), kind,
                         best->row.setting.c_str(), flag.c_str(), best->row.ms, best->processCpuMs,
-                        lit ? "(sanity)" : format("%.4f", best->row.rmse).c_str());
+                        lit ? "(sanity)" : printfFormat("%.4f", best->row.rmse).c_str());
             std::printf("%s%s", cell(gpu, !lit).c_str(), cell(cpu, !lit).c_str());
             std::printf("| %s | %s | %s | %s |\n",
-                        gpu ? format("%.2f", gpu->ms / best->row.ms).c_str() : "-",
-                        gpu ? format("%.2f", gpu->cpuMs / best->processCpuMs).c_str() : "-",
-                        cpu ? format("%.2f", cpu->ms / best->row.ms).c_str() : "-",
-                        cpu ? format("%.2f", cpu->cpuMs / best->processCpuMs).c_str() : "-");
+                        gpu ? printfFormat("%.2f", gpu->ms / best->row.ms).c_str() : "-",
+                        gpu ? printfFormat("%.2f", gpu->cpuMs / best->processCpuMs).c_str() : "-",
+                        cpu ? printfFormat("%.2f", cpu->ms / best->row.ms).c_str() : "-",
+                        cpu ? printfFormat("%.2f", cpu->cpuMs / best->processCpuMs).c_str() : "-");
         }
     }
     std::fflush(stdout);
@@ -509,14 +499,14 @@ void printComparison(const std::vector<NodeRow>& ours, const std::vector<VtkRow>
 // Export for the VTK script
 
 std::string jsonVec(const glm::dvec3& v) {
-    return format("[%.17g, %.17g, %.17g]", v.x, v.y, v.z);
+    return printfFormat("[%.17g, %.17g, %.17g]", v.x, v.y, v.z);
 }
 
 std::string jsonPoints(const PiecewiseLinear& f, double lo, double hi) {
     std::string s = "[";
     bool first = true;
     for (const PiecewiseLinear::Point& p : f.points()) {
-        s += (first ? "" : ", ") + format("[%.17g, %.17g]", lo + p.x * (hi - lo), p.y);
+        s += (first ? "" : ", ") + printfFormat("[%.17g, %.17g]", lo + p.x * (hi - lo), p.y);
         first = false;
     }
     return s + "]";
@@ -569,8 +559,8 @@ void exportNodeSuiteViews(const NodeSuiteSettings& st, const std::string& dir) {
              << raw << "\", \"dtype\": \"" << dtypeOf(grid.type()) << "\",\n     \"dimensions\": ["
              << grid.dimensions().x << ", " << grid.dimensions().y << ", " << grid.dimensions().z
              << "], \"spacing\": " << jsonVec(grid.spacing())
-             << ",\n     \"dataRange\": " << format("[%.17g, %.17g]", range.x, range.y)
-             << ", \"L0\": " << format("%.17g", grid.smallestSpacing()) << ",\n     \"red\": "
+             << ",\n     \"dataRange\": " << printfFormat("[%.17g, %.17g]", range.x, range.y)
+             << ", \"L0\": " << printfFormat("%.17g", grid.smallestSpacing()) << ",\n     \"red\": "
              << jsonPoints(tf.channel(TransferFunction1D::Red), range.x, range.y)
              << ",\n     \"green\": "
              << jsonPoints(tf.channel(TransferFunction1D::Green), range.x, range.y)
@@ -600,10 +590,10 @@ void exportNodeSuiteViews(const NodeSuiteSettings& st, const std::string& dir) {
                  << jsonVec(position + forward * double(camera.focalDistance()))
                  << ", \"viewUp\": " << jsonVec(up)
                  << ", \"orthographic\": " << (orthographic ? "true" : "false")
-                 << format(", \"viewAngle\": %.17g, \"parallelScale\": %.17g",
-                           orthographic ? 0.0 : 2.0 * std::atan(1.0 / p[1][1]) * 180.0 / M_PI,
-                           orthographic ? 1.0 / p[1][1] : 0.0)
-                 << format(", \"near\": %.17g, \"far\": %.17g}", nearDepth, farDepth)
+                 << printfFormat(", \"viewAngle\": %.17g, \"parallelScale\": %.17g",
+                                 orthographic ? 0.0 : 2.0 * std::atan(1.0 / p[1][1]) * 180.0 / M_PI,
+                                 orthographic ? 1.0 / p[1][1] : 0.0)
+                 << printfFormat(", \"near\": %.17g, \"far\": %.17g}", nearDepth, farDepth)
                  << (i + 1 < c.views.cameras.size() ? ",\n" : "\n");
         }
         json << "     ]}";
@@ -672,13 +662,13 @@ std::vector<BenchRow> runNodeSuite(const NodeSuiteSettings& st) {
             BenchRow r;
             r.scene = c.name;
             r.path = "reference";
-            r.setting = modeName(mode) + format(", tolerance %g", st.tolerance);
+            r.setting = modeName(mode) + printfFormat(", tolerance %g", st.tolerance);
             r.frames = int(ref.images.size());
             if (ref.ms.empty()) {
                 r.note = "read from " + st.referenceDir;
             } else {
                 r.ms = medianOf(ref.ms);
-                r.note = format("error bound %.2g", ref.errorBound) +
+                r.note = printfFormat("error bound %.2g", ref.errorBound) +
                          (ref.converged ? "" : ", not converged everywhere");
             }
             printRow(r);
@@ -714,7 +704,7 @@ std::vector<BenchRow> runNodeSuite(const NodeSuiteSettings& st) {
                 r.psnr = v.psnr;
                 r.maxAbs = v.maxAbs;
                 r.errorFrames = int(c.views.errorIndices.size());
-                r.note = format("process CPU %.0f ms/frame", v.cpuMs) +
+                r.note = printfFormat("process CPU %.0f ms/frame", v.cpuMs) +
                          (v.shading == "shaded" ? "; shaded: error for sanity only" : "") +
                          (v.renderer.empty() ? "" : "; " + v.renderer);
                 if (v.shading != "shaded") r.series = "VTK " + v.mapper + " " + v.mode;

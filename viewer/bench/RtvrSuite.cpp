@@ -28,7 +28,7 @@ namespace volsg::bench {
 
 namespace {
 
-constexpr const char* kVolumeName = "RTVR_VOLUME";
+constexpr const char* kRtvrVolume = "RTVR_VOLUME";
 /// The rows of a scene: each mode with the paper's column (MIP, DVR, DVR mono, mixed) it is
 /// compared with.
 struct ModeRow {
@@ -48,9 +48,9 @@ std::string sceneDirectory(const RtvrSuiteSettings& st) {
 }
 
 ShearWarpVolume& suiteVolume(Node& root, const std::string& file) {
-    Node* node = findByName(root, kVolumeName);
+    Node* node = findByName(root, kRtvrVolume);
     if (!node || !node->isA<ShearWarpVolume>())
-        throw Error(std::string("no ShearWarpVolume named ") + kVolumeName, file);
+        throw Error(std::string("no ShearWarpVolume named ") + kRtvrVolume, file);
     return static_cast<ShearWarpVolume&>(*node);
 }
 
@@ -129,14 +129,6 @@ std::size_t sceneVoxels(Node& root, ShearWarpVolume& volume, const std::string& 
                          ->voxelCount();
     }
     return total;
-}
-
-/// CPU time of the whole process (every thread, llvmpipe's too) in ms: on a shared, loaded
-/// machine it changes less than wall time, and on an idle one wall >= cpu / cores.
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
 void printHeader(const RtvrSuiteSettings& st) {

@@ -56,14 +56,6 @@ double percentile(std::vector<double> v, double p) {
     return v[std::min(v.size() - 1, std::size_t(p * double(v.size() - 1) + 0.5))];
 }
 
-/// Process CPU time (all threads: render thread, cache worker, llvmpipe's threads), ms.
-double processCpuMs() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    auto ms = [](const timeval& t) { return double(t.tv_sec) * 1e3 + double(t.tv_usec) * 1e-3; };
-    return ms(usage.ru_utime) + ms(usage.ru_stime);
-}
-
 /// CPU time of the calling thread, ms.
 double threadCpuMs() {
     timespec t{};

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "ImageError.h"
+#include "PrintfFormat.h"
 #include <volsg/actions/SearchAction.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/SceneReader.h>
@@ -18,14 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kVolumeName = "SUITE_VOLUME";
-
-std::string format(const char* pattern, double a = 0.0, double b = 0.0, double c = 0.0,
-                   double d = 0.0) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, pattern, a, b, c, d);
-    return buffer;
-}
+constexpr const char* kTargetCaseVolume = "SUITE_VOLUME";
 
 /// Opacity per L0 given for side 64 in a box about 2 units wide, for `side` voxels in it.
 double opacityFor(double alphaAt64, int side) {
@@ -52,12 +46,12 @@ std::string camera(View v) {
 std::string scene(const std::string& what, View v, const std::string& data,
                   const std::string& transfer, const std::string& volumeFields = "") {
     return "#Inventor V2.1 ascii\n# volsg-bench error-target sweep: " + what + "\nSeparator {\n" +
-           camera(v) + data + transfer + "  DEF " + kVolumeName + " Volume { " + volumeFields +
-           " }\n}\n";
+           camera(v) + data + transfer + "  DEF " + kTargetCaseVolume + " Volume { " +
+           volumeFields + " }\n}\n";
 }
 
 std::string ml(int n, const char* type = "UBYTE") {
-    return format("  VolumeData { generator MARSCHNER_LOBB dimensions %g %g %g ", n, n, n) +
+    return printfFormat("  VolumeData { generator MARSCHNER_LOBB dimensions %g %g %g ", n, n, n) +
            "dataType " + type + " }\n";
 }
 
@@ -106,7 +100,7 @@ std::string writeNoisySphere(const fs::path& dir, int n) {
                 voxels[std::size_t(i) + std::size_t(n) * (std::size_t(j) + std::size_t(n) * k)] =
                     std::uint8_t(std::clamp(std::lround(v), 0L, 255L));
             }
-    const fs::path file = dir / format("noisy-sphere-%g-u8.raw", n);
+    const fs::path file = dir / printfFormat("noisy-sphere-%g-u8.raw", n);
     std::ofstream(file, std::ios::binary)
         .write(reinterpret_cast<const char*>(voxels.data()), std::streamsize(voxels.size()));
     return file.string();
@@ -119,7 +113,7 @@ std::vector<TargetCaseSpec> targetCaseSpecs(const std::string& dataDir, bool lar
     fs::create_directories(dir);
     std::vector<TargetCaseSpec> out;
     const double s64 = 2.0 / 64.0;
-    const std::string spacing64 = format(" spacing %.9g %.9g %.9g }\n", s64, s64, s64);
+    const std::string spacing64 = printfFormat(" spacing %.9g %.9g %.9g }\n", s64, s64, s64);
 
     // The issue's second case: 37x23x19 USHORT, spacing 1 x 1.5 x 2.5, one narrow spike
     // (0 -> 0.9 -> 0 over 10% of the range), perspective, 128 x 128.
@@ -128,17 +122,18 @@ std::vector<TargetCaseSpec> targetCaseSpecs(const std::string& dataDir, bool lar
                    scene("anisotropic USHORT, narrow spike", View::Perspective,
                          "  VolumeData { fileName \"" + writeAnisotropicBlob(dir) +
                              "\" dimensions 37 23 19 dataType USHORT" +
-                             format(" spacing %.9g %.9g %.9g }\n", a, 1.5 * a, 2.5 * a),
+                             printfFormat(" spacing %.9g %.9g %.9g }\n", a, 1.5 * a, 2.5 * a),
                          "  TransferFunction { red [ 0 1 ] green [ 0 0.7 ] blue [ 0 0.3 ] "
                          "alpha [ 0 0, 0.45 0, 0.5 0.9, 0.55 0, 1 0 ] }\n")});
     out.push_back({"ml64-smooth-persp",
                    scene("Marschner-Lobb 64, smooth ramp", View::Perspective, ml(64),
                          "  TransferFunction { " + colourRamp() +
-                             format(" alpha [ 0 0, 1 %.6g ] }\n", opacityFor(0.06, 64)))});
-    out.push_back({"ml64-step-ortho",
-                   scene("Marschner-Lobb 64, steep step", View::Ortho, ml(64),
-                         "  TransferFunction { " + colourRamp() +
-                             format(" alpha [ 0 0, 0.5 0, 0.5 %.6g, 1 %.6g ] }\n", 0.15, 0.15))});
+                             printfFormat(" alpha [ 0 0, 1 %.6g ] }\n", opacityFor(0.06, 64)))});
+    out.push_back(
+        {"ml64-step-ortho",
+         scene("Marschner-Lobb 64, steep step", View::Ortho, ml(64),
+               "  TransferFunction { " + colourRamp() +
+                   printfFormat(" alpha [ 0 0, 0.5 0, 0.5 %.6g, 1 %.6g ] }\n", 0.15, 0.15))});
     out.push_back({"ml64-spike-persp",
                    scene("Marschner-Lobb 64, narrow spike", View::Perspective, ml(64),
                          "  TransferFunction { red [ 0 1 ] green [ 0 0.6 ] blue [ 0 0.2 ] "
@@ -174,8 +169,8 @@ std::vector<TargetCaseSpec> targetCaseSpecs(const std::string& dataDir, bool lar
     out.push_back({"ml32-spike-ortho",
                    scene("Marschner-Lobb 32, narrow spike", View::Ortho, ml(32),
                          "  TransferFunction { red [ 0 1 ] green [ 0 0.6 ] blue [ 0 0.2 ] " +
-                             format("alpha [ 0 0, 0.475 0, 0.5 %.6g, 0.525 0, 1 0 ] }\n",
-                                    opacityFor(0.6, 32)))});
+                             printfFormat("alpha [ 0 0, 0.475 0, 0.5 %.6g, 0.525 0, 1 0 ] }\n",
+                                          opacityFor(0.6, 32)))});
     out.push_back(
         {"ml64-mip-persp", scene("Marschner-Lobb 64, MIP", View::Perspective, ml(64),
                                  "  TransferFunction { " + colourRamp() + " alpha [ 0 0, 1 1 ] }\n",
@@ -184,7 +179,7 @@ std::vector<TargetCaseSpec> targetCaseSpecs(const std::string& dataDir, bool lar
         out.push_back({"ml128-smooth-persp",
                        scene("Marschner-Lobb 128, smooth ramp", View::Perspective, ml(128),
                              "  TransferFunction { " + colourRamp() +
-                                 format(" alpha [ 0 0, 1 %.6g ] }\n", opacityFor(0.06, 128))),
+                                 printfFormat(" alpha [ 0 0, 1 %.6g ] }\n", opacityFor(0.06, 128))),
                        256, 256});
         // The issue's first case: 256^3 uint8, 8% of the voxels visible (a soft sphere above
         // v = 0.406), grey ramp, orthographic, 512 x 512.
@@ -192,11 +187,11 @@ std::vector<TargetCaseSpec> targetCaseSpecs(const std::string& dataDir, bool lar
         out.push_back(
             {"issue-grey-ramp-256-ortho",
              scene("soft sphere 256, 8% visible, grey ramp", View::Ortho,
-                   format("  VolumeData { generator SOFT_SPHERE dimensions 256 256 256 "
-                          "spacing %.9g %.9g %.9g }\n",
-                          s256, s256, s256),
+                   printfFormat("  VolumeData { generator SOFT_SPHERE dimensions 256 256 256 "
+                                "spacing %.9g %.9g %.9g }\n",
+                                s256, s256, s256),
                    "  TransferFunction { red [ 0 0, 1 1 ] green [ 0 0, 1 1 ] blue [ 0 0, 1 1 ] " +
-                       format("alpha [ 0 0, 0.406 0, 1 %.6g ] }\n", opacityFor(0.3, 256))),
+                       printfFormat("alpha [ 0 0, 0.406 0, 1 %.6g ] }\n", opacityFor(0.3, 256))),
              512, 512, 4, 2});
     }
     return out;
@@ -207,9 +202,9 @@ SweepCase loadTargetCase(const TargetCaseSpec& spec, const RenderDebug& debug,
     SweepCase c;
     c.name = spec.name;
     c.root = readSceneFromString(spec.text, spec.name + ".iv");
-    Node* named = findByName(*c.root, kVolumeName);
+    Node* named = findByName(*c.root, kTargetCaseVolume);
     c.volume = named && named->isA<Volume>() ? static_cast<Volume*>(named) : nullptr;
-    if (!c.volume) throw Error("sweep case " + spec.name + " has no " + kVolumeName);
+    if (!c.volume) throw Error("sweep case " + spec.name + " has no " + kTargetCaseVolume);
     c.options.width = spec.width;
     c.options.height = spec.height;
     c.options.debug = debug;
@@ -219,11 +214,12 @@ SweepCase loadTargetCase(const TargetCaseSpec& spec, const RenderDebug& debug,
     c.diagonalL0 = glm::length(grid.extent()) / grid.smallestSpacing();
     RayCastOptions rayOptions;
     for (const int index : c.views.errorIndices) {
-        const fs::path file = referenceDir.empty()
-                                  ? fs::path()
-                                  : fs::path(referenceDir) /
-                                        (spec.name + format("-%gx%g-orbit%g-view%g.pfm", spec.width,
-                                                            spec.height, spec.frames, index));
+        const fs::path file =
+            referenceDir.empty()
+                ? fs::path()
+                : fs::path(referenceDir) /
+                      (spec.name + printfFormat("-%gx%g-orbit%g-view%g.pfm", spec.width,
+                                                spec.height, spec.frames, index));
         if (!file.empty() && fs::exists(file)) {
             c.reference.push_back(readPfm(file.string()));
             continue;

@@ -6,18 +6,13 @@
 #include <limits>
 
 #include "ImageError.h"
+#include "PrintfFormat.h"
 #include "Timing.h"
 #include <volsg/core/Error.h>
 
 namespace volsg::bench {
 
 namespace {
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-    char buffer[256];
-    std::snprintf(buffer, sizeof buffer, pattern, a, b, c, d);
-    return buffer;
-}
 
 /// A fixed setting of the grid: planes per L0 (over the box diagonal, so every view has at
 /// least that many along the view), samples per plane, pre-integration (DVR) or peaks (MIP).
@@ -32,7 +27,7 @@ bool extremeMode(const Volume& v) {
 }
 
 std::string fixedText(const FixedSetting& s, bool extreme) {
-    std::string t = format("%g planes/L0 x %g", s.planesPerL0, double(s.samples));
+    std::string t = printfFormat("%g planes/L0 x %g", s.planesPerL0, double(s.samples));
     if (extreme)
         t += s.method ? ", peaks" : ", no peaks";
     else if (s.method)
@@ -136,7 +131,7 @@ BenchRow rowOf(const SweepCase& c, const std::string& setting, const Measured& m
     row.rmse = m.rmse / 255.0;
     row.psnr = m.rmse > 0.0 ? 20.0 * std::log10(255.0 / m.rmse) : 0.0;
     row.errorFrames = int(c.views.errorIndices.size());
-    row.note = format("predicted %.3g/255", m.predicted);
+    row.note = printfFormat("predicted %.3g/255", m.predicted);
     row.series = series;
     return row;
 }
@@ -145,13 +140,13 @@ BenchRow rowOf(const SweepCase& c, const std::string& setting, const Measured& m
 
 std::string chosenSettingText(const Volume& volume) {
     const SlicingStats& s = volume.slicingStats();
-    std::string t = format("%g planes x %g (%.3g L0 apart)", double(s.planes),
-                           double(s.samplesPerPlane), s.planeSpacingL0);
+    std::string t = printfFormat("%g planes x %g (%.3g L0 apart)", double(s.planes),
+                                 double(s.samplesPerPlane), s.planeSpacingL0);
     if (s.preIntegrated) t += ", pre-int";
     if (s.mipPeaks) t += ", peaks";
     if (s.predictedRmse >= 0.0)
-        t += format(", predicted %.3g/255 (target %.3g)", s.predictedRmse * 255.0,
-                    s.errorTarget * 255.0) +
+        t += printfFormat(", predicted %.3g/255 (target %.3g)", s.predictedRmse * 255.0,
+                          s.errorTarget * 255.0) +
              (s.meetsTarget ? "" : " NOT MET");
     return t;
 }
@@ -209,7 +204,7 @@ std::vector<BenchRow> runTargetSweep(SweepCase& c, const SweepSettings& st,
         setAutomatic(*c.volume, target);
         const Measured m = t == 0 ? first : measure(c);
         BenchRow row =
-            rowOf(c, format("default, errorTarget %g: ", target) + m.chosen, m, "default");
+            rowOf(c, printfFormat("default, errorTarget %g: ", target) + m.chosen, m, "default");
         printRow(row);
         rows.push_back(row);
         SweepLine line;
@@ -247,14 +242,14 @@ void printSweepTables(const std::vector<SweepLine>& lines,
             continue;
         }
         const bool meets = l.defaultRmse <= l.target;
-        std::printf("| %s | %g | %s | %.1f | %.3g | %.3g | %s | %s | %s | %s | %s |\n",
-                    l.scene.c_str(), l.target, l.defaultSetting.c_str(), l.defaultMs, l.defaultRmse,
-                    l.defaultPredicted,
-                    l.bestSetting.empty() ? "(none meets it)" : l.bestSetting.c_str(),
-                    l.bestSetting.empty() ? "" : format("%.1f", l.bestMs).c_str(),
-                    l.bestSetting.empty() ? "" : format("%.3g", l.bestRmse).c_str(),
-                    l.bestSetting.empty() ? "" : format("%.2f", l.defaultMs / l.bestMs).c_str(),
-                    meets ? "yes" : (l.defaultRmse <= 2.0 * l.target ? "within 2x" : "NO"));
+        std::printf(
+            "| %s | %g | %s | %.1f | %.3g | %.3g | %s | %s | %s | %s | %s |\n", l.scene.c_str(),
+            l.target, l.defaultSetting.c_str(), l.defaultMs, l.defaultRmse, l.defaultPredicted,
+            l.bestSetting.empty() ? "(none meets it)" : l.bestSetting.c_str(),
+            l.bestSetting.empty() ? "" : printfFormat("%.1f", l.bestMs).c_str(),
+            l.bestSetting.empty() ? "" : printfFormat("%.3g", l.bestRmse).c_str(),
+            l.bestSetting.empty() ? "" : printfFormat("%.2f", l.defaultMs / l.bestMs).c_str(),
+            meets ? "yes" : (l.defaultRmse <= 2.0 * l.target ? "within 2x" : "NO"));
     }
     if (validation.empty()) return;
     std::printf("\nThe error model: predicted against measured RMSE (1/255) of the fixed "

@@ -1,8 +1,10 @@
 #pragma once
-// Wall-clock sampling for the benchmark: medians and minima, never assertions.
+// Time sampling for the benchmark: wall-clock medians and minima, process CPU; never
+// assertions.
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <vector>
 
 namespace volsg::bench {
@@ -25,6 +27,13 @@ template <class F> double timeMs(F&& f) {
     f();
     const auto t1 = std::chrono::steady_clock::now();
     return std::chrono::duration<double, std::milli>(t1 - t0).count();
+}
+
+/// CPU time of the whole process (all its threads, llvmpipe's included), ms.
+inline double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
 } // namespace volsg::bench

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "ImageError.h"
+#include "PrintfFormat.h"
 #include "ReferenceViews.h"
 #include <volsg/core/Error.h>
 #include <volsg/io/SceneReader.h>
@@ -19,19 +20,13 @@ namespace volsg::bench {
 
 namespace {
 
-constexpr const char* kVolumeName = "SUITE_VOLUME";
+constexpr const char* kSuiteVolume = "SUITE_VOLUME";
 constexpr const char* kShearWarpName = "SUITE_SHEARWARP";
 
 /// Opacity of a slab L0 thick, given for side 64, for a volume of `side` voxels in the same
 /// box: L0 scales by 64 / side.
 double opacityFor(double alphaAt64, int side) {
     return 1.0 - std::pow(1.0 - alphaAt64, 64.0 / double(side));
-}
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
-    return buffer;
 }
 
 /// Header, camera and light shared by every suite scene: slightly above the equator, far
@@ -44,11 +39,11 @@ std::string sceneStart(const std::string& name) {
 }
 
 std::string volumeNode() {
-    return std::string("  DEF ") + kVolumeName + " Volume { }\n}\n";
+    return std::string("  DEF ") + kSuiteVolume + " Volume { }\n}\n";
 }
 
 Volume* findSuiteVolume(Node& node) {
-    if (node.getName() == kVolumeName && node.isA<Volume>()) return static_cast<Volume*>(&node);
+    if (node.getName() == kSuiteVolume && node.isA<Volume>()) return static_cast<Volume*>(&node);
     if (auto* children = node.children())
         for (const auto& child : *children)
             if (child)
@@ -81,10 +76,10 @@ std::string shearWarpSceneText(const std::string& text, bool labelled) {
         camera.replace(0, perspective.size(), "OrthographicCamera {");
         const std::size_t angle = camera.find("heightAngle 0.9 ");
         if (angle != std::string::npos)
-            camera.replace(angle, 16, format("height %.6g ", 2.0 * 4.18 * std::tan(0.45)));
+            camera.replace(angle, 16, printfFormat("height %.6g ", 2.0 * 4.18 * std::tan(0.45)));
         out.replace(at, end + 1 - at, camera);
     }
-    const std::string volume = std::string("DEF ") + kVolumeName + " Volume { }";
+    const std::string volume = std::string("DEF ") + kSuiteVolume + " Volume { }";
     const std::size_t v = out.find(volume);
     if (v != std::string::npos) {
         const std::string objects =
@@ -111,7 +106,7 @@ struct SlicingSetting {
 };
 
 std::string settingText(const SlicingSetting& s) {
-    return format("%g planes/voxel", s.planesPerVoxel) +
+    return printfFormat("%g planes/voxel", s.planesPerVoxel) +
            (s.interactive ? ", interactive" : ", still") +
            (s.preIntegrated ? ", pre-integrated" : "");
 }
@@ -159,7 +154,7 @@ BenchRow measureSlicing(Node& root, Volume& volume, const SuiteScene& scene,
     row.path = "slicing";
     row.setting = settingText(setting);
     row.series = seriesOf(setting);
-    row.pointLabel = format("%g", setting.planesPerVoxel);
+    row.pointLabel = printfFormat("%g", setting.planesPerVoxel);
     images.clear();
 
     const glm::dvec3 dims = glm::dvec3(st.side);
@@ -204,14 +199,14 @@ BenchRow measureShearWarp(Node& root, ShearWarpVolume& volume, const SuiteScene&
     row.scene = scene.name;
     row.path = "shear-warp";
     row.setting =
-        format("%g threads", threads) + (optimized ? ", optimized" : ", not optimized") +
+        printfFormat("%g threads", threads) + (optimized ? ", optimized" : ", not optimized") +
         ", orthographic" +
-        (interactive ? format(", interactive (slice step %g)", volume.sliceStepFor(true, 1.0))
+        (interactive ? printfFormat(", interactive (slice step %g)", volume.sliceStepFor(true, 1.0))
                      : std::string());
     row.series = interactive ? "shear-warp interactive"
                  : optimized ? "shear-warp optimized"
                              : "shear-warp";
-    row.pointLabel = format("%g thr", threads);
+    row.pointLabel = printfFormat("%g thr", threads);
     volume.threads = threads;
     volume.optimize = optimized;
     RenderOptions options = suiteOptions(st);
@@ -247,48 +242,49 @@ std::vector<SuiteScene> volumeSuiteScenes(int side) {
 
     // Marschner-Lobb keeps its own spacing 2/(n-1): the signal's coordinates.
     const std::string ml =
-        format("  VolumeData { generator MARSCHNER_LOBB dimensions %g %g %g }\n", n, n, n);
-    scenes.push_back({format("marschner-lobb-%g-smooth", n),
+        printfFormat("  VolumeData { generator MARSCHNER_LOBB dimensions %g %g %g }\n", n, n, n);
+    scenes.push_back({printfFormat("marschner-lobb-%g-smooth", n),
                       sceneStart("Marschner-Lobb, smooth transfer function") + ml +
                           "  TransferFunction {\n"
                           "    red [ 0 0.1, 0.5 0.9, 1 1 ]  green [ 0 0.3, 0.5 0.6, 1 0.9 ]  "
                           "blue [ 0 1, 0.5 0.4, 1 0.1 ]\n" +
-                          format("    alpha [ 0 0, 1 %.6g ]\n  }\n", opacityFor(0.06, side)) +
+                          printfFormat("    alpha [ 0 0, 1 %.6g ]\n  }\n", opacityFor(0.06, side)) +
                           volumeNode()});
-    scenes.push_back({format("marschner-lobb-%g-spiky", n),
+    scenes.push_back({printfFormat("marschner-lobb-%g-spiky", n),
                       sceneStart("Marschner-Lobb, spiky transfer function (alpha peak 0.05 wide)") +
                           ml +
                           "  TransferFunction {\n"
                           "    red [ 0 1 ]  green [ 0 0.6 ]  blue [ 0 0.2 ]\n" +
-                          format("    alpha [ 0 0, 0.475 0, 0.5 %.6g, 0.525 0, 1 0 ]\n  }\n",
-                                 opacityFor(0.6, side)) +
-                          volumeNode()});
-    scenes.push_back({format("ramp16-%g", n),
-                      sceneStart("16-bit ramp through a narrow data window") +
-                          format("  VolumeData { generator RAMP16 dimensions %g %g %g ", n, n, n) +
-                          format("spacing %.9g %.9g %.9g }\n", spacing, spacing, spacing) +
-                          "  TransferFunction {\n"
-                          "    dataRange 30000 36000\n"
-                          "    red [ 0 1, 1 0.2 ]  green [ 0 0.8, 1 0.5 ]  blue [ 0 0.1, 1 1 ]\n" +
-                          format("    alpha [ 0 0, 1 %.6g ]\n  }\n", opacityFor(0.08, side)) +
+                          printfFormat("    alpha [ 0 0, 0.475 0, 0.5 %.6g, 0.525 0, 1 0 ]\n  }\n",
+                                       opacityFor(0.6, side)) +
                           volumeNode()});
     scenes.push_back(
-        {format("labelled-%g", n),
+        {printfFormat("ramp16-%g", n),
+         sceneStart("16-bit ramp through a narrow data window") +
+             printfFormat("  VolumeData { generator RAMP16 dimensions %g %g %g ", n, n, n) +
+             printfFormat("spacing %.9g %.9g %.9g }\n", spacing, spacing, spacing) +
+             "  TransferFunction {\n"
+             "    dataRange 30000 36000\n"
+             "    red [ 0 1, 1 0.2 ]  green [ 0 0.8, 1 0.5 ]  blue [ 0 0.1, 1 1 ]\n" +
+             printfFormat("    alpha [ 0 0, 1 %.6g ]\n  }\n", opacityFor(0.08, side)) +
+             volumeNode()});
+    scenes.push_back(
+        {printfFormat("labelled-%g", n),
          sceneStart("labelled volume, one transfer function per tag") +
-             format("  VolumeData { generator LABELLED dimensions %g %g %g ", n, n, n) +
-             format("spacing %.9g %.9g %.9g }\n", spacing, spacing, spacing) +
-             format("  TransferFunction { red [ 0 0.7 ] green [ 0 0.7 ] blue [ 0 0.7 ] "
-                    "alpha [ 0 0, 1 %.6g ] }\n",
-                    opacityFor(0.01, side)) +
-             format("  TransferFunction { tag 1 red [ 0 1 ] green [ 0 0.2 ] blue [ 0 0.1 ] "
-                    "alpha [ 0 0, 1 %.6g ] }\n",
-                    opacityFor(0.15, side)) +
-             format("  TransferFunction { tag 2 red [ 0 0.2 ] green [ 0 0.9 ] blue [ 0 0.3 ] "
-                    "alpha [ 0 0, 0.3 0, 1 %.6g ] }\n",
-                    opacityFor(0.05, side)) +
-             format("  TransferFunction { tag 3 red [ 0 0.2 ] green [ 0 0.4 ] blue [ 0 1 ] "
-                    "alpha [ 0 %.6g ] }\n",
-                    opacityFor(0.03, side)) +
+             printfFormat("  VolumeData { generator LABELLED dimensions %g %g %g ", n, n, n) +
+             printfFormat("spacing %.9g %.9g %.9g }\n", spacing, spacing, spacing) +
+             printfFormat("  TransferFunction { red [ 0 0.7 ] green [ 0 0.7 ] blue [ 0 0.7 ] "
+                          "alpha [ 0 0, 1 %.6g ] }\n",
+                          opacityFor(0.01, side)) +
+             printfFormat("  TransferFunction { tag 1 red [ 0 1 ] green [ 0 0.2 ] blue [ 0 0.1 ] "
+                          "alpha [ 0 0, 1 %.6g ] }\n",
+                          opacityFor(0.15, side)) +
+             printfFormat("  TransferFunction { tag 2 red [ 0 0.2 ] green [ 0 0.9 ] blue [ 0 0.3 ] "
+                          "alpha [ 0 0, 0.3 0, 1 %.6g ] }\n",
+                          opacityFor(0.05, side)) +
+             printfFormat("  TransferFunction { tag 3 red [ 0 0.2 ] green [ 0 0.4 ] blue [ 0 1 ] "
+                          "alpha [ 0 %.6g ] }\n",
+                          opacityFor(0.03, side)) +
              volumeNode()});
     return scenes;
 }
@@ -309,7 +305,7 @@ std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
         }
         ref_ptr<Node> root = readSceneFromString(scene.text, scene.name + ".iv");
         Volume* volume = findSuiteVolume(*root);
-        if (!volume) throw Error("suite scene " + scene.name + " has no " + kVolumeName);
+        if (!volume) throw Error("suite scene " + scene.name + " has no " + kSuiteVolume);
 
         RenderOptions options = suiteOptions(st);
         options.background = st.background;
@@ -321,12 +317,12 @@ std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
         BenchRow truthRow;
         truthRow.scene = scene.name;
         truthRow.path = "reference";
-        truthRow.setting = format("tolerance %g (the truth)", truthOptions.tolerance);
+        truthRow.setting = printfFormat("tolerance %g (the truth)", truthOptions.tolerance);
         truthRow.ms = truth.ms.median();
         truthRow.frames = int(truth.ms.ms.size());
         truthRow.memoryBytes = truth.rssDelta;
         truthRow.memoryKind = "rss";
-        truthRow.note = format("error bound %.2g", truth.errorBound) +
+        truthRow.note = printfFormat("error bound %.2g", truth.errorBound) +
                         (truth.converged ? "" : ", not converged everywhere");
         emit(truthRow);
         for (double tolerance : {1e-3, 1e-2}) {
@@ -334,13 +330,13 @@ std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
             coarse.tolerance = tolerance;
             const ReferenceImages images = renderReferenceViews(*root, options, views, coarse);
             BenchRow row = truthRow;
-            row.setting = format("tolerance %g", tolerance);
+            row.setting = printfFormat("tolerance %g", tolerance);
             row.ms = images.ms.median();
             row.setError(images.images, truth.images);
             row.memoryBytes = images.rssDelta;
-            row.note = format("error bound %.2g", images.errorBound);
+            row.note = printfFormat("error bound %.2g", images.errorBound);
             row.series = "reference";
-            row.pointLabel = format("tol %g", tolerance);
+            row.pointLabel = printfFormat("tol %g", tolerance);
             emit(row);
         }
 
@@ -373,11 +369,11 @@ std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
             renderReferenceViews(*swRoot, options, swViews, truthOptions);
         BenchRow swTruthRow = truthRow;
         swTruthRow.setting =
-            format("tolerance %g, orthographic (shear-warp's truth)", truthOptions.tolerance);
+            printfFormat("tolerance %g, orthographic (shear-warp's truth)", truthOptions.tolerance);
         swTruthRow.ms = swTruth.ms.median();
         swTruthRow.frames = int(swTruth.ms.ms.size());
         swTruthRow.memoryBytes = swTruth.rssDelta;
-        swTruthRow.note = format("error bound %.2g", swTruth.errorBound);
+        swTruthRow.note = printfFormat("error bound %.2g", swTruth.errorBound);
         emit(swTruthRow);
         for (bool optimized : {false, true})
             for (int threads : {1, 2})

@@ -18,6 +18,7 @@
 
 #include "../CommandLine.h"
 #include "../bench/ImageError.h"
+#include "../bench/PrintfFormat.h"
 #include "../bench/ReferenceViews.h"
 #include "../bench/Timing.h"
 #include "VolPackCases.h"
@@ -37,19 +38,14 @@ namespace {
 
 using namespace volsg;
 using namespace volsg::volpackbench;
+using bench::printfFormat;
+using bench::processCpuMs;
 
 /// CPU time of the calling thread in ms. VolPack renders on one thread, so this is its frame
 /// time without the waits a loaded machine adds (wall time is printed too).
 double threadCpuMs() {
     timespec t{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
-
-/// CPU time of the whole process in ms (every thread: the engine's, llvmpipe's).
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
@@ -200,12 +196,6 @@ void printRow(const char* label, const bench::Samples& s, const std::string& wha
                 s.median(), s.min(), what.c_str());
 }
 
-std::string format(const char* pattern, double a, double b = 0.0) {
-    char text[200];
-    std::snprintf(text, sizeof text, pattern, a, b);
-    return text;
-}
-
 CaseResult runCase(const Case& c, const Settings& st) {
     const std::filesystem::path& out = st.inputs.out;
     const std::filesystem::path scenePath = out / ("volpack-" + c.name + ".iv");
@@ -289,7 +279,7 @@ CaseResult runCase(const Case& c, const Settings& st) {
                 c.name.c_str(), c.description.c_str(), d.x, d.y, d.z, r.volpackVoxels,
                 100.0 * double(r.volpackVoxels) / double(volume.data->voxelCount()),
                 volpack->colorChannels() == 1 ? "grey" : "RGB", st.size, st.size);
-    printRow("VolPack (wall)", volpackMs, format("  (classification %.0f ms)", classifyMs));
+    printRow("VolPack (wall)", volpackMs, printfFormat("  (classification %.0f ms)", classifyMs));
     printRow("VolPack (thread CPU)", volpackCpu, "");
     if (node) {
         for (int t = 0; t < 2; ++t) {
@@ -298,10 +288,12 @@ CaseResult runCase(const Case& c, const Settings& st) {
             r.engine[t] = node->engine[t].median();
             r.engineCpu[t] = node->engineCpu[t].median();
             const std::string threads = std::to_string(2 - t) + (t == 0 ? " threads" : " thread");
-            printRow(("node whole frame, " + threads).c_str(), node->whole[t],
-                     format("  (VolPack / node: %.2f)", r.volpack / std::max(r.whole[t], 1e-9)));
+            printRow(
+                ("node whole frame, " + threads).c_str(), node->whole[t],
+                printfFormat("  (VolPack / node: %.2f)", r.volpack / std::max(r.whole[t], 1e-9)));
             printRow(("  engine alone (wall)"), node->engine[t],
-                     format("  (VolPack / engine: %.2f)", r.volpack / std::max(r.engine[t], 1e-9)));
+                     printfFormat("  (VolPack / engine: %.2f)",
+                                  r.volpack / std::max(r.engine[t], 1e-9)));
             printRow("  process CPU", node->wholeCpu[t], "");
             printRow(("  engine alone (CPU)"), node->engineCpu[t], "");
         }
@@ -344,7 +336,7 @@ void printSummary(const std::vector<CaseResult>& results) {
         std::printf("| %s | %.2f | %.2f | **%.2f** | %.2f | %.2f | **%.2f** | %.2f |\n",
                     r.name.c_str(), r.volpack, r.whole[0], ratio(r.volpack, r.whole[0]),
                     r.engine[0], r.whole[1], ratio(r.volpack, r.whole[1]), r.engine[1]);
-    const auto rmse = [](double v) { return v < 0.0 ? std::string("-") : format("%.2e", v); };
+    const auto rmse = [](double v) { return v < 0.0 ? std::string("-") : printfFormat("%.2e", v); };
     std::printf("\n| case | VolPack voxels | node voxels read (hidden) | VolPack CPU | engine CPU "
                 "2 thr | process CPU whole 2 thr | engine CPU 1 thr | RMSE VolPack | RMSE node "
                 "|\n");

@@ -13,7 +13,6 @@ using lanes::loadV4;
 using lanes::toVec4;
 using lanes::V4;
 
-constexpr float kPickAlpha = TwoLevelComposite::kPickAlpha;
 constexpr float kSurfaceAlpha = TwoLevelComposite::kSurfaceAlpha;
 constexpr float kSurfaceDepthAlpha = TwoLevelComposite::kSurfaceDepthAlpha;
 
@@ -60,7 +59,8 @@ inline void compositePixel(const TwoLevelRow& row, int c, const glm::vec4& sampl
     if constexpr (Mode == ObjectCompositing::MIP) {
         if (sample.x > row.localValue[c]) {
             row.localValue[c] = sample.x;
-            if (mipLookup(row.objects[row.object].mipTable, sample.x).w >= kPickAlpha) {
+            if (mipLookup(row.objects[row.object].mipTable, sample.x).w >=
+                TwoLevelComposite::kPickAlpha) {
                 row.pickObject[c] = row.object;
                 row.pickSlice[c] = row.slice;
             }
@@ -70,7 +70,7 @@ inline void compositePixel(const TwoLevelRow& row, int c, const glm::vec4& sampl
     // DVR and Surface: accumulated within the run; a Surface run is drawn opaque at the flush
     // when its alpha reaches kSurfaceAlpha, at the depth of its front-most dense sample.
     row.local[c] = sample + (1.0f - sample.w) * row.local[c];
-    if (sample.w >= kPickAlpha) {
+    if (sample.w >= TwoLevelComposite::kPickAlpha) {
         row.pickObject[c] = row.object;
         row.pickSlice[c] = row.slice;
     }
