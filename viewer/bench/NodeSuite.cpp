@@ -200,6 +200,12 @@ NodeRow measure(LoadedCase& c, const NodeSetting& setting, const Reference& refe
     volume.preIntegrated = setting.preIntegrated;
     volume.samplesPerPlane = setting.samplesPerPlane;
     volume.mipPeaks = setting.mipPeaks;
+    // An "auto planes" row is the node's default: the quality fields it leaves at their
+    // defaults stay unset, so the error target chooses them (a written field is kept as given).
+    const bool automatic = setting.planesPerVoxel <= 0.0;
+    volume.preIntegrated.setDefault(automatic && !setting.preIntegrated);
+    volume.samplesPerPlane.setDefault(automatic && setting.samplesPerPlane == 1);
+    volume.mipPeaks.setDefault(automatic && setting.mipPeaks);
     volume.numPlanes =
         setting.planesPerVoxel > 0.0 ? int(std::ceil(setting.planesPerVoxel * c.diagonalInL0)) : 0;
     volume.interactivePlanes = 0;
