@@ -190,23 +190,16 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
     const int lowest = kLowestStep;
     for (const bool kind : kinds) {
         const bool pre = !extreme && kind, peaks = extreme && kind;
-        int start = lowest; // the rate that met the target with the previous sample count
         for (const int samples : sampleCounts) {
             // Refinement takes the neighbours of a slab's top: it needs two samples a plane.
             if (extreme && !peaks && request.refinePeaks && samples < 2 && !request.samplesPerPlane)
                 continue;
-            // The walk starts where the previous sample count met the target, or lower, at the
-            // one-plane layout of this count: more samples in one slab can beat fewer in two.
-            int first = start;
-            if (!request.numPlanes && view.depthL0 > 0.0)
-                first = std::clamp(
-                    int(std::ceil(2.0 * std::log2(samples / (std::sqrt(2.0) * view.depthL0)))),
-                    lowest, first);
-            for (int j = first; j <= kHighestStep; ++j) {
+            for (int j = lowest; j <= kHighestStep; ++j) {
                 const SlabQuadrature q =
                     quadratureFor(std::pow(2.0, 0.5 * j), samples, pre, peaks, request, view);
                 // Spacings beyond the view's depth all draw one plane: only the densest of them
-                // (within a rate step, sqrt 2, of the depth) is worth evaluating.
+                // (within a rate step, sqrt 2, of the depth) is worth evaluating. Each sample
+                // count walks from there: more samples in one slab can beat fewer in two.
                 if (!request.numPlanes &&
                     view.depthL0 / q.planeSpacingL0 < kMinAutoPlanes / std::sqrt(2.0) &&
                     j < kHighestStep)
@@ -219,7 +212,6 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
                     best.quadrature = q;
                     best.predictedRmse = error;
                     bestCost = cost;
-                    start = std::max(lowest, j - 2);
                     break;
                 }
                 if (single) break;
