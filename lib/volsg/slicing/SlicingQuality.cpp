@@ -163,8 +163,7 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
     if (fixedKind)
         kinds.push_back(*fixedKind);
     else
-        kinds = {true, false}; // pre-integrated (peaks) first: it usually meets the target
-                               // cheaply, and its cost then bounds the other walk
+        kinds = {true, false}; // pre-integrated (peaks) first: it wins ties
     // Samples per plane to try: the request's, or (planes automatic) powers of two; with a
     // fixed plane count the samples follow the rate.
     std::vector<int> sampleCounts;
@@ -176,49 +175,75 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
         for (int k = 1; k <= kMaxAutoSamples; k *= 2)
             sampleCounts.push_back(k);
 
+    // One walk per (kind, sample count) up the sampling rates. The candidates of all walks are
+    // evaluated cheapest first (a walk's cost rises with its rate), and the first that meets
+    // the target is the answer: the cheapest of the walks' first candidates to meet it, found
+    // with no candidate dearer than it evaluated (proving a candidate meets the target reads
+    // every ray; proving a miss usually reads a few).
+    struct Walk {
+        bool pre = false, peaks = false;
+        int samples = 1;
+        int step = kLowestStep;
+        SlabQuadrature q;
+        double cost = 0.0;
+    };
+    const bool single = request.numPlanes && request.samplesPerPlane;
+    // Moves walk w to its next candidate at or after its step; false when it has none.
+    const auto settle = [&](Walk& w) {
+        for (; w.step <= kHighestStep; ++w.step) {
+            w.q = quadratureFor(std::pow(2.0, 0.5 * w.step), w.samples, w.pre, w.peaks, request,
+                                view);
+            // Spacings beyond the view's depth all draw one plane: only the densest of them
+            // (within a rate step, sqrt 2, of the depth) is worth evaluating.
+            if (!request.numPlanes &&
+                view.depthL0 / w.q.planeSpacingL0 < kMinAutoPlanes / std::sqrt(2.0) &&
+                w.step < kHighestStep)
+                continue;
+            w.cost = quadratureCost(w.q, view.depthL0, mode, model.tagged());
+            return true;
+        }
+        return false;
+    };
+    std::vector<Walk> walks;
+    for (const bool kind : kinds)
+        for (const int samples : sampleCounts) {
+            // Refinement takes the neighbours of a slab's top: it needs two samples a plane.
+            if (extreme && !kind && request.refinePeaks && samples < 2 && !request.samplesPerPlane)
+                continue;
+            Walk w;
+            w.pre = !extreme && kind;
+            w.peaks = extreme && kind;
+            w.samples = samples;
+            if (settle(w)) walks.push_back(w);
+        }
+
     QualityChoice best;
-    double bestCost = std::numeric_limits<double>::infinity();
+    bool found = false;
     // Candidates that missed the target, with their error or a lower bound of it (an
     // evaluation stops once it proves the target missed): the least error among them is
     // found exactly only when nothing meets the target.
     std::vector<std::pair<double, SlabQuadrature>> missed;
     const double wanted = request.errorTarget * kTargetMargin;
-    const bool single = request.numPlanes && request.samplesPerPlane;
-    // The walk starts at the lowest rate: the signal's needs (SignalNeeds) would skip cheap
-    // rates, but a step in the transfer function has a narrowest feature of one table entry
-    // and still meets loose targets at low rates (pre-integrated).
-    const int lowest = kLowestStep;
-    for (const bool kind : kinds) {
-        const bool pre = !extreme && kind, peaks = extreme && kind;
-        for (const int samples : sampleCounts) {
-            // Refinement takes the neighbours of a slab's top: it needs two samples a plane.
-            if (extreme && !peaks && request.refinePeaks && samples < 2 && !request.samplesPerPlane)
-                continue;
-            for (int j = lowest; j <= kHighestStep; ++j) {
-                const SlabQuadrature q =
-                    quadratureFor(std::pow(2.0, 0.5 * j), samples, pre, peaks, request, view);
-                // Spacings beyond the view's depth all draw one plane: only the densest of them
-                // (within a rate step, sqrt 2, of the depth) is worth evaluating. Each sample
-                // count walks from there: more samples in one slab can beat fewer in two.
-                if (!request.numPlanes &&
-                    view.depthL0 / q.planeSpacingL0 < kMinAutoPlanes / std::sqrt(2.0) &&
-                    j < kHighestStep)
-                    continue;
-                const double cost = quadratureCost(q, view.depthL0, mode, model.tagged());
-                if (cost >= bestCost) break; // dearer than a choice that meets the target
-                const double error = predictImageRmseUpTo(model, view, q, wanted);
-                if (error > wanted) missed.emplace_back(error, q);
-                if (error <= wanted) {
-                    best.quadrature = q;
-                    best.predictedRmse = error;
-                    bestCost = cost;
-                    break;
-                }
-                if (single) break;
-            }
+    std::vector<bool> ended(walks.size(), false);
+    while (!found) {
+        // The cheapest open walk's candidate (ties: the earlier walk).
+        std::size_t next = walks.size();
+        for (std::size_t i = 0; i < walks.size(); ++i)
+            if (!ended[i] && (next == walks.size() || walks[i].cost < walks[next].cost)) next = i;
+        if (next == walks.size()) break;
+        Walk& w = walks[next];
+        const double error = predictImageRmseUpTo(model, view, w.q, wanted);
+        if (error <= wanted) {
+            best.quadrature = w.q;
+            best.predictedRmse = error;
+            found = true;
+            break;
         }
+        missed.emplace_back(error, w.q);
+        ++w.step;
+        if (single || !settle(w)) ended[next] = true;
     }
-    if (!std::isfinite(bestCost)) {
+    if (!found) {
         // The least error: exact values in the order of their bounds, until no bound is lower.
         std::sort(missed.begin(), missed.end(),
                   [](const auto& a, const auto& b) { return a.first < b.first; });
