@@ -99,19 +99,26 @@ bool sameImages(const std::vector<Image>& a, const std::vector<Image>& b) {
     return true;
 }
 
+/// A fixed plane count (one sample per plane), or with planesPerVoxel 0 the node's default:
+/// every quality field unset, chosen from Volume.errorTarget (interactiveErrorTarget).
 struct SlicingSetting {
     double planesPerVoxel;
     bool preIntegrated;
     bool interactive;
+    bool automatic() const { return planesPerVoxel <= 0.0; }
 };
 
 std::string settingText(const SlicingSetting& s) {
+    if (s.automatic())
+        return s.interactive ? "default, interactive (interactiveErrorTarget)"
+                             : "default, still (errorTarget)";
     return printfFormat("%g planes/voxel", s.planesPerVoxel) +
            (s.interactive ? ", interactive" : ", still") +
            (s.preIntegrated ? ", pre-integrated" : "");
 }
 
 std::string seriesOf(const SlicingSetting& s) {
+    if (s.automatic()) return "slicing default";
     return std::string("slicing ") + (s.interactive ? "interactive" : "still") +
            (s.preIntegrated ? " pre-integrated" : "");
 }
@@ -154,13 +161,23 @@ BenchRow measureSlicing(Node& root, Volume& volume, const SuiteScene& scene,
     row.path = "slicing";
     row.setting = settingText(setting);
     row.series = seriesOf(setting);
-    row.pointLabel = printfFormat("%g", setting.planesPerVoxel);
+    row.pointLabel = setting.automatic()
+                         ? (setting.interactive ? "default, interactive" : "default")
+                         : printfFormat("%g", setting.planesPerVoxel);
     images.clear();
 
     const glm::dvec3 dims = glm::dvec3(st.side);
-    volume.numPlanes = int(std::ceil(setting.planesPerVoxel * glm::length(dims)));
+    volume.numPlanes =
+        setting.automatic() ? 0 : int(std::ceil(setting.planesPerVoxel * glm::length(dims)));
+    volume.numPlanes.setDefault(setting.automatic());
     volume.interactivePlanes = 0;
+    volume.interactivePlanes.setDefault(true);
+    // A fixed row fixes every quality field (one sample per plane); the default row leaves
+    // them unset, as a scene that never names them.
     volume.preIntegrated = setting.preIntegrated;
+    volume.preIntegrated.setDefault(setting.automatic());
+    volume.samplesPerPlane = 1;
+    volume.samplesPerPlane.setDefault(setting.automatic());
     RenderOptions options = suiteOptions(st);
     options.background = st.background;
     options.interactive = setting.interactive;
@@ -340,6 +357,11 @@ std::vector<BenchRow> runVolumeSuite(const VolumeSuiteSettings& st) {
             emit(row);
         }
 
+        for (bool interactive : {false, true}) {
+            std::vector<Image> automatic;
+            emit(measureSlicing(*root, *volume, scene, {0.0, false, interactive}, st, views, truth,
+                                automatic));
+        }
         for (bool interactive : {false, true})
             for (double planes : {0.5, 1.0, 2.0, 4.0}) {
                 std::vector<Image> plain, preIntegrated;
