@@ -108,26 +108,26 @@ QualityView qualityViewOf(const glm::dmat4& modelView, const glm::dmat4& project
 }
 
 double quadratureCost(const SlabQuadrature& q, double depthL0, VolumeRenderMode mode, bool tagged) {
-    // Fitted to llvmpipe's times (ML 64^3, 128 x 128, 54 fixed settings, README "Error
-    // targets"): a plane's fragments cost about 8.7 lean samples (rasterisation, slab set-up,
-    // the float blend); a pre-integrated sample 3.2 (two data fetches and a 2D table, the
-    // general loop); a general-loop sample 1.5; a tagged sample 4.5.
+    // Fitted to llvmpipe's times, in units of one lean sample of the same mode (README, "Error
+    // targets": the fixed grids of the chest CT and Marschner-Lobb 256^3 at 512 x 512 and of
+    // the 64^3 sweep cases at 128 x 128). DVR: a plane's fragments cost about 8.7 lean
+    // samples (rasterisation, slab set-up, the float blend); a pre-integrated sample 3.2 (two
+    // data fetches and a 2D table, the general loop); a general-loop sample 1.5; a tagged
+    // sample 4.5. MIP/MINIP: a lean sample is a fetch and a compare, so the rest weighs more:
+    // a plane 22, a general-loop sample 6, a voxel-centre crossing 3.
     const double planes = std::max(1.0, std::ceil(depthL0 / q.planeSpacingL0 - 1e-9));
     const int k = std::max(q.samplesPerPlane, 1);
-    constexpr double fragment = 8.7;
-    double perSample = 1.0;
-    double samples = k;
     if (mode == VolumeRenderMode::DVR) {
         const bool lean = k > 1 && !tagged && !q.preIntegrated;
         // Tagged: the tag-cell split dominates either way (measured on the labelled 64^3 sweep
         // case, a pre-integrated sample cost what a post-classified one did).
-        perSample = tagged ? 4.5 : q.preIntegrated ? 3.2 : lean ? 1.0 : 1.5;
-    } else {
-        const bool lean = k > 1 && !tagged && !q.peaks;
-        perSample = lean ? 1.0 : 1.5;
-        if (q.peaks) samples += k == 1 ? 3.0 : 1.7 * q.planeSpacingL0; // voxel-centre crossings
+        const double perSample = tagged ? 4.5 : q.preIntegrated ? 3.2 : lean ? 1.0 : 1.5;
+        return planes * (8.7 + k * perSample);
     }
-    return planes * (fragment + samples * perSample);
+    const bool lean = k > 1 && !tagged && !q.peaks;
+    double perPlane = 22.0 + k * (lean ? 1.0 : 6.0);
+    if (q.peaks) perPlane += 3.0 * (k == 1 ? 3.0 : 1.7 * q.planeSpacingL0); // the crossings
+    return planes * perPlane;
 }
 
 double predictImageRmse(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q) {
