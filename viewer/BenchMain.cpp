@@ -89,7 +89,7 @@ const char* usage =
     "  --sweep         error targets (Volume.errorTarget): per case a grid of fixed settings,\n"
     "                  the fastest that meets each target against the default at that target,\n"
     "                  and the error model's prediction against the measured error of each\n"
-    "                  (--suite volumes: the sweep's own cases, 4 views, 2 compared; --large\n"
+    "                  (--suite volumes: the sweep's own cases, 4 views, all compared; --large\n"
     "                  adds 128^3 and the 256^3 at 512x512; --suite node: its cases, DVR and\n"
     "                  MIP). --targets in 1/255 (default 0.5,0.25,2; the first is the\n"
     "                  default's), --sweep-quick: a coarser grid, --before-after: no grid,\n"

@@ -16,7 +16,7 @@ struct TargetCaseSpec {
     std::string name;
     std::string text; ///< a scene with one Volume named SUITE_VOLUME
     int width = 128, height = 128;
-    int frames = 4, errorFrames = 2;
+    int frames = 4, errorFrames = 4; // every view compared: the bar is per frame
 };
 
 /// The specs; raw volumes the scenes read are written into `dataDir`. `large`: also the

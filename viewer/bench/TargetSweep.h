@@ -40,6 +40,9 @@ struct SweepLine {
     double target = 0.0;        ///< 1/255
     std::string defaultSetting; ///< what the node chose (view 0)
     double defaultMs = 0.0, defaultRmse = 0.0, defaultPredicted = 0.0; ///< RMSE in 1/255
+    /// Of the compared views, how many of the default's frames are within the target and
+    /// within twice it (the bar: 95% and all).
+    int viewsCompared = 0, viewsWithin = 0, viewsWithinTwice = 0;
     std::string bestSetting; ///< "" when no fixed setting met the target
     double bestMs = 0.0, bestRmse = 0.0;
 };
