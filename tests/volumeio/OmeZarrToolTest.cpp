@@ -8,6 +8,9 @@
 #include <cstdlib>
 #include <cstring>
 
+#include <volsg/io/SceneReader.h>
+#include <volsg/nodes/VolumeData.h>
+#include <volsg/volumeio/OmeZarrPyramid.h>
 #include <volsg/volumeio/VolumeReader.h>
 
 using namespace volsg;
@@ -125,6 +128,28 @@ TEST_CASE("volsg reads the OME-Zarr images python-zarr writes") {
         CHECK(grid->spacing() == glm::dvec3(0.5, 1.0, 2.0));
         checkBytes(*grid, dir.file(std::string(name) + ".bin"));
     }
+}
+
+TEST_CASE("VolumeData opens an OME-Zarr image by fileName, a level by its folder") {
+    TempDir dir;
+    const auto grid = patternGrid({37, 23, 19}, VoxelType::Short, {0.5, 0.5, 1.0});
+    PyramidOptions options;
+    options.chunk = 16;
+    writeOmeZarrPyramid(*grid, dir.file("head.zarr"), options);
+    const auto open = [&](const std::string& name) {
+        writeFile(dir.file("scene.iv"),
+                  "#Inventor V2.1 ascii\nVolumeData { fileName \"" + name + "\" }\n");
+        const ref_ptr<Node> root = readScene(dir.file("scene.iv"));
+        return static_cast<VolumeData&>(*root).grid();
+    };
+    std::string first;
+    CHECK(countDifferences(*open("head.zarr"), *grid, first) == 0);
+    const auto level1 = open("head.zarr/1");
+    CHECK(level1->dimensions() == glm::ivec3(19, 12, 10));
+    CHECK(level1->spacing() == glm::dvec3(1.0, 1.0, 2.0));
+    const std::string absent = errorOf([&] { open("absent.zarr"); });
+    CHECK_HAS(absent, "absent.zarr");
+    CHECK_HAS(absent, "no such folder");
 }
 
 TEST_CASE("volsg-pyramid says what is wrong in one line") {

@@ -266,7 +266,10 @@ bool isZarrFolder(const std::string& path) {
 
 ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level, std::uint64_t byteLimit) {
     std::error_code ec;
-    if (!fs::is_directory(path, ec)) throw Error("cannot open OME-Zarr image: not a folder", path);
+    if (!fs::is_directory(path, ec))
+        throw Error(std::string("cannot open OME-Zarr image: ") +
+                        (fs::exists(path, ec) ? "not a folder" : "no such folder"),
+                    path);
     const OmeZarrLevel where = findLevel(fs::path(path).lexically_normal(), level);
     const std::string zarrayPath = (fs::path(where.arrayFolder) / ".zarray").string();
     const ZarrArrayLayout layout = readZarrArrayLayout(where.arrayFolder, byteLimit);

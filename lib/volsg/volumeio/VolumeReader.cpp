@@ -40,6 +40,7 @@ ref_ptr<VolumeGrid> readVolume(const std::string& path, const RawVolumeLayout* r
         return name.size() >= tail.size() &&
                name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
     };
+    if (endsWith(".zarr")) return readOmeZarr(path, 0, byteLimit); // says it is no folder
     if (endsWith(".nrrd") || endsWith(".nhdr")) return readNrrd(path, byteLimit);
     if (endsWith(".mhd") || endsWith(".mha")) return readMetaImage(path, byteLimit);
     if (endsWith(".nii") || endsWith(".nii.gz") || endsWith(".hdr") || endsWith(".hdr.gz"))
