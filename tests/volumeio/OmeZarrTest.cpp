@@ -73,7 +73,8 @@ TEST_CASE("pyramid level 0 reads back voxel for voxel for every dtype and compre
                 TempDir dir;
                 const auto grid = patternGrid(dims, type, {0.5, 0.75, 2.0});
                 const std::string path = dir.file("p.zarr");
-                writeOmeZarrPyramid(*grid, path, optionsWith(compressor));
+                // Chunks of 32: edge chunks on every axis, few files.
+                writeOmeZarrPyramid(*grid, path, optionsWith(compressor, 32));
                 const auto back = readVolume(path); // a .zarr folder: OME-Zarr, level 0
                 checkEqual(*back, *grid);
                 CHECK(back->spacing() == glm::dvec3(0.5, 0.75, 2.0));
@@ -333,4 +334,33 @@ TEST_CASE("the pyramid writer refuses to write over an existing folder") {
     const std::string m = errorOf([&] { writeOmeZarrPyramid(*grid, dir.file("x.zarr")); });
     CHECK_HAS(m, "x.zarr");
     CHECK_HAS(m, "already exists");
+}
+
+TEST_CASE("older NGFF metadata: axes as names and no transformations give spacing 1") {
+    TempDir dir;
+    const auto grid = patternGrid({37, 23, 19}, VoxelType::UByte, {2.0, 2.0, 2.0});
+    const std::string path = dir.file("old.zarr");
+    writeOmeZarrPyramid(*grid, path, optionsWith("zlib"));
+    editJson(path + "/.zattrs", [](json& j) {
+        j["multiscales"][0]["version"] = "0.3";
+        j["multiscales"][0]["axes"] = {"z", "y", "x"};
+        for (json& d : j["multiscales"][0]["datasets"])
+            d.erase("coordinateTransformations");
+    });
+    const auto back = readOmeZarr(path);
+    checkEqual(*back, *grid);
+    CHECK(back->spacing() == glm::dvec3(1.0));
+}
+
+TEST_CASE("a chunk that is a symbolic link out of its array's folder is an error") {
+    TempDir dir;
+    const auto grid = patternGrid({37, 23, 19}, VoxelType::UByte);
+    const std::string path = dir.file("s.zarr");
+    writeOmeZarrPyramid(*grid, path, optionsWith("none"));
+    writeFile(dir.file("outside"), std::string(16 * 16 * 16, 'x'));
+    fs::remove(path + "/0/0/0/0");
+    fs::create_symlink(dir.file("outside"), path + "/0/0/0/0");
+    const std::string m = errorOf([&] { readOmeZarr(path); });
+    CHECK_HAS(m, path + "/0/.zarray");
+    CHECK_HAS(m, "0/0/0");
 }

@@ -98,7 +98,9 @@ private:
     // The "scale" of an object's coordinateTransformations as x, y, z (1 where there is none).
     glm::dvec3 scaleOf(const json& owner, const std::string& where) const {
         glm::dvec3 scale(1.0);
-        const json& transforms = owner["coordinateTransformations"];
+        const auto found = owner.find("coordinateTransformations");
+        if (found == owner.end()) return scale; // NGFF before 0.4
+        const json& transforms = *found;
         if (!transforms.is_array()) fail(where + ".coordinateTransformations must be a list");
         for (const json& t : transforms) {
             if (!t.is_object() || !t.contains("type"))
@@ -207,12 +209,13 @@ void checkChunkKeys(const std::string& arrayFolder, const ZarrArrayLayout& layou
 // One chunk's voxels in host byte order, or the fill value where the chunk file is missing.
 class ChunkLoader {
 public:
-    ChunkLoader(const std::string& arrayFolder, const ZarrArrayLayout& layout)
-        : folder_(arrayFolder), layout_(layout),
+    ChunkLoader(const std::string& zarrayPath, const ZarrArrayLayout& layout)
+        : zarrayPath_(zarrayPath), layout_(layout),
           buffer_(std::size_t(layout.chunkElements()) * voxelTypeSize(layout.type)) {}
 
     std::span<const std::byte> load(const std::vector<std::uint64_t>& index) {
-        const std::string path = (fs::path(folder_) / layout_.chunkKey(index)).string();
+        // Inside the array's folder, as every data file a header names (io/ContainedFile.h).
+        const std::string path = InputFile::resolveBeside(zarrayPath_, layout_.chunkKey(index));
         std::error_code ec;
         if (!fs::exists(path, ec)) return fillChunk();
         InputFile file(path);
@@ -244,7 +247,7 @@ private:
         return fill_;
     }
 
-    std::string folder_;
+    std::string zarrayPath_;
     const ZarrArrayLayout& layout_;
     std::vector<std::byte> buffer_, stored_, fill_;
 };
@@ -288,7 +291,7 @@ ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level, std::uint64_
     const std::size_t size = voxelTypeSize(layout.type);
     const glm::ivec3 chunk(int(layout.chunks[rank - 1]), int(layout.chunks[rank - 2]),
                            int(layout.chunks[rank - 3]));
-    ChunkLoader loader(where.arrayFolder, layout);
+    ChunkLoader loader(zarrayPath, layout);
     // Leading axes (t, c) stay at chunk 0: their first element is the volume read.
     std::vector<std::uint64_t> index(rank, 0);
     for (int cz = 0; cz * chunk.z < dims.z; ++cz)
