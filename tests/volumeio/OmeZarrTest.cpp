@@ -323,6 +323,15 @@ TEST_CASE("lying or unsupported metadata is an error naming the metadata file") 
     m = errorOf([&] { readOmeZarr(path); });
     CHECK_HAS(m, zattrs);
     CHECK_HAS(m, "finite and > 0");
+    editJson(zattrs, [](json& j) {
+        j["multiscales"][0]["datasets"][0]["coordinateTransformations"][0]["scale"] = {1, 1};
+    });
+    CHECK_HAS(errorOf([&] { readOmeZarr(path); }), "one entry per axis");
+    writeFile(zattrs, std::string(200000, '[') + std::string(200000, ']'));
+    m = errorOf([&] { readOmeZarr(path); });
+    CHECK_HAS(m, zattrs);
+    CHECK_HAS(m, "nested deeper than 32");
+    writeFile(zattrs, goodAttrs);
     editJson(zattrs, [](json& j) { j["multiscales"][0]["datasets"][0]["path"] = "../../etc"; });
     CHECK_HAS(errorOf([&] { readOmeZarr(path); }), zattrs);
 }

@@ -120,7 +120,10 @@ TEST_CASE("volsg reads the OME-Zarr images python-zarr writes") {
     const std::pair<const char*, VoxelType> cases[] = {
         {"a", VoxelType::UShort}, {"b", VoxelType::Float},  {"c", VoxelType::UByte},
         {"d", VoxelType::Short},  {"e", VoxelType::UShort}, {"f", VoxelType::Short}};
-    for (const auto& [name, type] : cases) {
+    for (const auto& entry : cases) {
+        // Not a structured binding: clang 14 cannot capture one in CAPTURE's lambda.
+        const char* const name = entry.first;
+        const VoxelType type = entry.second;
         CAPTURE(name);
         const auto grid = readVolume(dir.file(std::string(name) + ".zarr"));
         CHECK(grid->type() == type);

@@ -67,9 +67,10 @@ public:
         level.axisCount = axisCount();
         level.arrayFolder = InputFile::resolveBeside(path_, dataset["path"].get<std::string>());
         // Dataset scale times the image's own (NGFF 0.4 applies that one after).
-        glm::dvec3 scale = scaleOf(dataset, "datasets[" + std::to_string(index) + "]");
+        glm::dvec3 scale =
+            scaleOf(dataset, "datasets[" + std::to_string(index) + "]", level.axisCount);
         if (image_->contains("coordinateTransformations"))
-            scale *= scaleOf(*image_, "multiscales[0]");
+            scale *= scaleOf(*image_, "multiscales[0]", level.axisCount);
         level.spacing = scale;
         return level;
     }
@@ -96,7 +97,8 @@ private:
     }
 
     // The "scale" of an object's coordinateTransformations as x, y, z (1 where there is none).
-    glm::dvec3 scaleOf(const json& owner, const std::string& where) const {
+    // `axisCount` 0: not named, at least three entries.
+    glm::dvec3 scaleOf(const json& owner, const std::string& where, std::size_t axisCount) const {
         glm::dvec3 scale(1.0);
         const auto found = owner.find("coordinateTransformations");
         if (found == owner.end()) return scale; // NGFF before 0.4
@@ -113,7 +115,8 @@ private:
             if (!t.contains(kind))
                 fail(where + ": " + kind + " given by a \"path\" or missing (volsg reads lists)");
             const json& values = t[kind];
-            if (!values.is_array() || values.size() < 3)
+            if (!values.is_array() || values.size() < 3 ||
+                (axisCount != 0 && values.size() != axisCount))
                 fail(where + ": " + kind + " " + values.dump() + " must have one entry per axis");
             for (const json& v : values)
                 if (!v.is_number() || !std::isfinite(v.get<double>()) ||
@@ -286,7 +289,12 @@ ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level, std::uint64_
     checkedGridBytes(zarrayPath, 0, dims, layout.type, where.spacing, byteLimit);
     checkChunkKeys(where.arrayFolder, layout, zarrayPath);
 
-    ref_ptr<VolumeGrid> grid = VolumeGrid::create(dims, layout.type, where.spacing, byteLimit);
+    ref_ptr<VolumeGrid> grid;
+    try {
+        grid = VolumeGrid::create(dims, layout.type, where.spacing, byteLimit);
+    } catch (const Error& e) {
+        throw Error(e.message(), zarrayPath);
+    }
     const std::span<std::byte> out = grid->bytes();
     const std::size_t size = voxelTypeSize(layout.type);
     const glm::ivec3 chunk(int(layout.chunks[rank - 1]), int(layout.chunks[rank - 2]),

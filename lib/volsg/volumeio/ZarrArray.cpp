@@ -20,6 +20,27 @@ nlohmann::json readZarrJson(const std::string& path) {
                   std::to_string(limits::maxHeaderLength));
     std::string text(std::size_t(file.size()), '\0');
     if (file.read(text.data(), text.size()) != text.size()) file.fail("file ended while reading");
+    // Zarr metadata is a few levels deep; deeper nesting is refused before parsing, since
+    // printing such a value in a message would recurse once per level.
+    constexpr int maxDepth = 32;
+    int depth = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > maxDepth)
+                file.fail("JSON nested deeper than " + std::to_string(maxDepth) + " levels");
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
     try {
         return json::parse(text);
     } catch (const json::parse_error& e) {
