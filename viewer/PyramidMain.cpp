@@ -1,5 +1,6 @@
 // volsg-pyramid: writes any volume volsg reads as an OME-Zarr multiscale pyramid
-// (lib/volsg/volumeio/OMEZARR.md), which volsg, napari, Neuroglancer and python-zarr open.
+// (lib/volsg/volumeio/OMEZARR.md), which volsg and other OME-Zarr readers (python-zarr in the
+// tests) open.
 #include <cstdio>
 #include <string>
 

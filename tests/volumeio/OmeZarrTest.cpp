@@ -373,3 +373,33 @@ TEST_CASE("a chunk that is a symbolic link out of its array's folder is an error
     CHECK_HAS(m, path + "/0/.zarray");
     CHECK_HAS(m, "0/0/0");
 }
+
+TEST_CASE("a pyramid keeps the patient placement of its source, each level's at its voxel 0") {
+    TempDir dir;
+    auto grid = patternGrid({37, 23, 19}, VoxelType::Short, {0.5, 0.75, 2.0});
+    VolumeGeometry placed;
+    placed.known = true;
+    placed.directions = glm::dmat3(-1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0); // columns
+    placed.origin = {10.0, -20.0, 30.5};
+    grid->setGeometry(placed);
+    const std::string path = dir.file("g.zarr");
+    writeOmeZarrPyramid(*grid, path, optionsWith("zstd"));
+    const VolumeGeometry level0 = readOmeZarr(path)->geometry();
+    CHECK(level0.known);
+    CHECK(level0.directions == placed.directions);
+    CHECK(level0.origin == placed.origin);
+    // Level 1's voxel 0 is centred between level 0's voxels 0 and 1 on every axis.
+    const VolumeGeometry level1 = readOmeZarr(path, 1)->geometry();
+    const glm::dvec3 shift = placed.directions * glm::dvec3(0.25, 0.375, 1.0);
+    CHECK(glm::length(level1.origin - (placed.origin + shift)) < 1e-12);
+    // Without the source's placement none is made up.
+    writeOmeZarrPyramid(*patternGrid({5, 4, 3}, VoxelType::UByte), dir.file("n.zarr"));
+    CHECK_FALSE(readOmeZarr(dir.file("n.zarr"))->geometry().known);
+
+    editJson(path + "/.zattrs", [](json& j) {
+        j["multiscales"][0]["metadata"]["volsg"]["lpsOrigin"] = {1, 2};
+    });
+    const std::string m = errorOf([&] { readOmeZarr(path); });
+    CHECK_HAS(m, path + "/.zattrs");
+    CHECK_HAS(m, "lpsOrigin");
+}

@@ -250,7 +250,7 @@ void gridPlane(const VolumeGrid& grid, int z, std::vector<double>& out) {
 }
 
 json multiscalesOf(const std::string& name, const std::vector<PyramidLevel>& levels,
-                   const PyramidOptions& options) {
+                   const PyramidOptions& options, const VolumeGeometry& geometry) {
     json axes = json::array();
     for (const char* axis : {"z", "y", "x"}) {
         json a = {{"name", axis}, {"type", "space"}};
@@ -270,16 +270,25 @@ json multiscalesOf(const std::string& name, const std::vector<PyramidLevel>& lev
                                {"translation", {translation.z, translation.y, translation.x}}}}}});
     }
     const std::string method = options.labels ? "mode" : "mean";
+    json metadata = {{"method", "volsg 2x2x2 " + method},
+                     {"description", options.labels ? "most frequent label, ties to the smallest"
+                                                    : "mean, rounded to nearest for integers"}};
+    // NGFF 0.4 cannot say where a scan lies in the patient; volsg keeps it beside the standard
+    // metadata, so that a pyramid of a CT opens placed as its source file did.
+    if (geometry.known) {
+        const glm::dmat3& d = geometry.directions;
+        metadata["volsg"] = {
+            {"lpsDirections",
+             {{d[0].x, d[0].y, d[0].z}, {d[1].x, d[1].y, d[1].z}, {d[2].x, d[2].y, d[2].z}}},
+            {"lpsOrigin", {geometry.origin.x, geometry.origin.y, geometry.origin.z}}};
+    }
     return {{"multiscales",
              {{{"version", "0.4"},
                {"name", name},
                {"axes", axes},
                {"datasets", datasets},
                {"type", method},
-               {"metadata",
-                {{"method", "volsg 2x2x2 " + method},
-                 {"description", options.labels ? "most frequent label, ties to the smallest"
-                                                : "mean, rounded to nearest for integers"}}}}}}};
+               {"metadata", metadata}}}}};
 }
 
 } // namespace
@@ -341,9 +350,10 @@ std::vector<PyramidLevel> writeOmeZarrPyramid(const VolumeGrid& grid, const std:
         levels.push_back(writer->summary);
     }
     // Last: an interrupted run leaves no image metadata that promises levels it lacks.
-    writeText(root / ".zattrs",
-              multiscalesOf(fs::absolute(root).filename().string(), levels, options).dump(4) +
-                  "\n");
+    writeText(root / ".zattrs", multiscalesOf(fs::absolute(root).filename().string(), levels,
+                                              options, grid.geometry())
+                                        .dump(4) +
+                                    "\n");
     return levels;
 }
 

@@ -26,6 +26,7 @@ struct OmeZarrLevel {
     std::string arrayFolder;
     std::size_t axisCount = 3; ///< 0 when no metadata names the axes (a bare array)
     glm::dvec3 spacing{1.0};   ///< x, y, z
+    VolumeGeometry geometry;   ///< from volsg's own metadata, when the writer kept it
 };
 
 class MultiscalesParser {
@@ -72,6 +73,7 @@ public:
         if (image_->contains("coordinateTransformations"))
             scale *= scaleOf(*image_, "multiscales[0]", level.axisCount);
         level.spacing = scale;
+        level.geometry = geometryOf(dataset);
         return level;
     }
 
@@ -94,6 +96,52 @@ private:
                      ": volsg reads images whose last three axes (and only those) are spatial");
         }
         return axes->size();
+    }
+
+    // The patient placement volsg-pyramid keeps in multiscales[0].metadata.volsg, moved to
+    // this level's voxel (0,0,0) by its translation; unknown without it.
+    VolumeGeometry geometryOf(const json& dataset) const {
+        VolumeGeometry geometry;
+        const json* volsg = nullptr;
+        if (const auto m = image_->find("metadata"); m != image_->end() && m->is_object())
+            if (const auto v = m->find("volsg"); v != m->end()) volsg = &*v;
+        if (!volsg) return geometry;
+        const auto numbers = [&](const json& list, std::size_t count) {
+            if (!list.is_array() || list.size() != count) return false;
+            for (const json& n : list)
+                if (!n.is_number() || !std::isfinite(n.get<double>())) return false;
+            return true;
+        };
+        const json directions = volsg->value("lpsDirections", json());
+        const json origin = volsg->value("lpsOrigin", json());
+        if (!numbers(origin, 3) || !directions.is_array() || directions.size() != 3 ||
+            !numbers(directions[0], 3) || !numbers(directions[1], 3) || !numbers(directions[2], 3))
+            fail("metadata.volsg must hold lpsDirections (3 lists of 3 finite numbers) and "
+                 "lpsOrigin (3 finite numbers)");
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r)
+                geometry.directions[c][r] =
+                    directions[std::size_t(c)][std::size_t(r)].get<double>();
+        geometry.origin = {origin[0].get<double>(), origin[1].get<double>(),
+                           origin[2].get<double>()};
+        geometry.origin += geometry.directions * translationOf(dataset);
+        geometry.known = true;
+        return geometry;
+    }
+
+    // The dataset's translation as x, y, z (0 where there is none), checked by scaleOf.
+    static glm::dvec3 translationOf(const json& dataset) {
+        glm::dvec3 shift(0.0);
+        const auto found = dataset.find("coordinateTransformations");
+        if (found == dataset.end() || !found->is_array()) return shift;
+        for (const json& t : *found)
+            if (t.is_object() && t.value("type", json()) == "translation" &&
+                t.contains("translation")) {
+                const json& v = t["translation"];
+                const std::size_t n = v.size();
+                shift = {v[n - 1].get<double>(), v[n - 2].get<double>(), v[n - 3].get<double>()};
+            }
+        return shift;
     }
 
     // The "scale" of an object's coordinateTransformations as x, y, z (1 where there is none).
@@ -295,6 +343,7 @@ ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level, std::uint64_
     } catch (const Error& e) {
         throw Error(e.message(), zarrayPath);
     }
+    grid->setGeometry(where.geometry);
     const std::span<std::byte> out = grid->bytes();
     const std::size_t size = voxelTypeSize(layout.type);
     const glm::ivec3 chunk(int(layout.chunks[rank - 1]), int(layout.chunks[rank - 2]),

@@ -86,7 +86,8 @@ ref_ptr<VolumeGrid> readDicomSeries(const std::string& path,
 /// or 5 (t, c, z, y, x): the volume is t = 0, c = 0. dtypes |u1 <u2 >u2 <i2 >i2 <f4 >f4;
 /// order C; compressor null, zlib, gzip, zstd or blosc; dimension_separator "." or "/". A
 /// missing chunk file holds fill_value (Zarr's rule). Spacing is the level's scale (times the
-/// image's), in the axes' unit; translations are checked but not used. Errors name the
+/// image's), in the axes' unit. geometry() is known only for pyramids volsg wrote from a placed
+/// volume (multiscales[0].metadata.volsg, moved to the level by its translation). Errors name the
 /// .zattrs, .zarray or chunk file: malformed JSON, unsupported metadata, a chunk that does
 /// not decompress to exactly the chunk's bytes, a chunk file outside the declared shape.
 ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level = 0,
