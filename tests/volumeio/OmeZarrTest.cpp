@@ -327,6 +327,18 @@ TEST_CASE("lying or unsupported metadata is an error naming the metadata file") 
         j["multiscales"][0]["datasets"][0]["coordinateTransformations"][0]["scale"] = {1, 1};
     });
     CHECK_HAS(errorOf([&] { readOmeZarr(path); }), "one entry per axis");
+    // Found by fuzz-omezarr: a number beyond double's range is nlohmann's out_of_range, not a
+    // parse error.
+    writeFile(zattrs, "{\"multiscales\": [{\"version\": 6e358}]}");
+    m = errorOf([&] { readOmeZarr(path); });
+    CHECK_HAS(m, zattrs);
+    CHECK_HAS(m, "number overflow");
+    writeFile(zattrs, goodAttrs);
+    writeFile(zarray, "{\"zarr_format\": 2, \"shape\": [1e400, 1, 1]}");
+    m = errorOf([&] { readOmeZarr(path); });
+    CHECK_HAS(m, zarray);
+    CHECK_HAS(m, "number overflow");
+    writeFile(zarray, goodArray);
     writeFile(zattrs, std::string(200000, '[') + std::string(200000, ']'));
     m = errorOf([&] { readOmeZarr(path); });
     CHECK_HAS(m, zattrs);

@@ -303,6 +303,15 @@ private:
     std::vector<std::byte> buffer_, stored_, fill_;
 };
 
+// findLevel, with a JSON read the parsers' checks missed as the same one-line error.
+OmeZarrLevel findLevelChecked(const fs::path& folder, int level) {
+    try {
+        return findLevel(folder, level);
+    } catch (const json::exception& e) {
+        throw Error(std::string("unexpected multiscales metadata: ") + e.what(), folder.string());
+    }
+}
+
 } // namespace
 
 bool isZarrFolder(const std::string& path) {
@@ -324,7 +333,7 @@ ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level, std::uint64_
         throw Error(std::string("cannot open OME-Zarr image: ") +
                         (fs::exists(path, ec) ? "not a folder" : "no such folder"),
                     path);
-    const OmeZarrLevel where = findLevel(fs::path(path).lexically_normal(), level);
+    const OmeZarrLevel where = findLevelChecked(fs::path(path).lexically_normal(), level);
     const std::string zarrayPath = (fs::path(where.arrayFolder) / ".zarray").string();
     const ZarrArrayLayout layout = readZarrArrayLayout(where.arrayFolder, byteLimit);
     const std::size_t rank = layout.shape.size();

@@ -43,8 +43,9 @@ nlohmann::json readZarrJson(const std::string& path) {
     }
     try {
         return json::parse(text);
-    } catch (const json::parse_error& e) {
-        // what() starts with "[json.exception.parse_error.101] parse error at line..."
+    } catch (const json::exception& e) {
+        // what() starts with "[json.exception.parse_error.101] parse error at line..." (or
+        // out_of_range.406 for a number beyond double's range).
         std::string what = e.what();
         const auto bracket = what.find("] ");
         if (bracket != std::string::npos) what.erase(0, bracket + 2);
@@ -164,6 +165,44 @@ private:
     const json& root_;
 };
 
+ZarrArrayLayout interpretZarray(const std::string& path, const json& root,
+                                std::uint64_t byteLimit) {
+    const ZarrArrayParser parser(path, root);
+    if (!root.is_object()) parser.fail("a .zarray must be a JSON object");
+    if (parser.member("zarr_format") != 2)
+        parser.fail("zarr_format " + parser.member("zarr_format").dump() +
+                    " is not 2 (volsg reads Zarr v2)");
+    ZarrArrayLayout layout;
+    layout.shape = parser.extents("shape");
+    layout.chunks = parser.extents("chunks");
+    if (layout.chunks.size() != layout.shape.size())
+        parser.fail("\"chunks\" has " + std::to_string(layout.chunks.size()) +
+                    " entries, \"shape\" " + std::to_string(layout.shape.size()));
+    parser.dtype(layout);
+    // Five entries of up to 2^16 can overflow 64 bits: each step is checked against the limit.
+    std::uint64_t chunkBytes = voxelTypeSize(layout.type);
+    for (std::uint64_t c : layout.chunks) {
+        if (chunkBytes > byteLimit / c)
+            parser.fail("a chunk of " + root["chunks"].dump() + " is larger than the limit of " +
+                        std::to_string(byteLimit) + " bytes");
+        chunkBytes *= c;
+    }
+    if (root.contains("order") && root["order"] != "C")
+        parser.fail("order " + root["order"].dump() + " is not \"C\" (volsg reads C order)");
+    if (root.contains("filters") && !root["filters"].is_null() &&
+        !(root["filters"].is_array() && root["filters"].empty()))
+        parser.fail("filters " + root["filters"].dump() + " are not supported");
+    if (root.contains("dimension_separator")) {
+        const json& s = root["dimension_separator"];
+        if (s != "." && s != "/")
+            parser.fail("dimension_separator " + s.dump() + " must be \".\" or \"/\"");
+        layout.dimensionSeparator = s.get<std::string>()[0];
+    }
+    layout.fillValue = parser.fillValue(layout.type);
+    layout.codec = parser.codec();
+    return layout;
+}
+
 } // namespace
 
 std::string ZarrArrayLayout::chunkKey(const std::vector<std::uint64_t>& index) const {
@@ -217,41 +256,13 @@ std::string ZarrArrayLayout::toJson() const {
 ZarrArrayLayout readZarrArrayLayout(const std::string& arrayFolder, std::uint64_t byteLimit) {
     const std::string path = (std::filesystem::path(arrayFolder) / ".zarray").string();
     const json root = readZarrJson(path);
-    const ZarrArrayParser parser(path, root);
-    if (!root.is_object()) parser.fail("a .zarray must be a JSON object");
-    if (parser.member("zarr_format") != 2)
-        parser.fail("zarr_format " + parser.member("zarr_format").dump() +
-                    " is not 2 (volsg reads Zarr v2)");
-    ZarrArrayLayout layout;
-    layout.shape = parser.extents("shape");
-    layout.chunks = parser.extents("chunks");
-    if (layout.chunks.size() != layout.shape.size())
-        parser.fail("\"chunks\" has " + std::to_string(layout.chunks.size()) +
-                    " entries, \"shape\" " + std::to_string(layout.shape.size()));
-    parser.dtype(layout);
-    // Each chunk entry is <= 2^16, so the product of five cannot overflow 2^80... but it can
-    // overflow 64 bits: multiply with a check.
-    std::uint64_t chunkBytes = voxelTypeSize(layout.type);
-    for (std::uint64_t c : layout.chunks) {
-        if (chunkBytes > byteLimit / c)
-            parser.fail("a chunk of " + root["chunks"].dump() + " is larger than the limit of " +
-                        std::to_string(byteLimit) + " bytes");
-        chunkBytes *= c;
+    // The parser checks each member's type before reading it; this turns any read it missed
+    // into the same one-line error.
+    try {
+        return interpretZarray(path, root, byteLimit);
+    } catch (const json::exception& e) {
+        throw Error(std::string("unexpected metadata: ") + e.what(), path);
     }
-    if (root.contains("order") && root["order"] != "C")
-        parser.fail("order " + root["order"].dump() + " is not \"C\" (volsg reads C order)");
-    if (root.contains("filters") && !root["filters"].is_null() &&
-        !(root["filters"].is_array() && root["filters"].empty()))
-        parser.fail("filters " + root["filters"].dump() + " are not supported");
-    if (root.contains("dimension_separator")) {
-        const json& s = root["dimension_separator"];
-        if (s != "." && s != "/")
-            parser.fail("dimension_separator " + s.dump() + " must be \".\" or \"/\"");
-        layout.dimensionSeparator = s.get<std::string>()[0];
-    }
-    layout.fillValue = parser.fillValue(layout.type);
-    layout.codec = parser.codec();
-    return layout;
 }
 
 } // namespace volsg
