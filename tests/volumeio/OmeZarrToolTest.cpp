@@ -9,9 +9,11 @@
 #include <cstring>
 
 #include <volsg/io/SceneReader.h>
+#include <volsg/io/SceneWriter.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/volumeio/OmeZarrPyramid.h>
 #include <volsg/volumeio/VolumeReader.h>
+#include <volsg/volumescene/SceneForFile.h>
 
 using namespace volsg;
 using namespace zarrtest;
@@ -153,6 +155,16 @@ TEST_CASE("VolumeData opens an OME-Zarr image by fileName, a level by its folder
     const std::string absent = errorOf([&] { open("absent.zarr"); });
     CHECK_HAS(absent, "absent.zarr");
     CHECK_HAS(absent, "no such folder");
+}
+
+TEST_CASE("the scene built for a .zarr folder names it, also when given as 'head.zarr/'") {
+    TempDir dir;
+    writeOmeZarrPyramid(*patternGrid({5, 4, 3}, VoxelType::UByte), dir.file("head.zarr"));
+    for (const std::string& given : {dir.file("head.zarr"), dir.file("head.zarr/")}) {
+        CAPTURE(given);
+        CHECK(fileKindOf(given) == FileKind::Volume);
+        CHECK_HAS(writeSceneToString(*sceneForVolumeFile(given)), "fileName \"head.zarr\"");
+    }
 }
 
 TEST_CASE("volsg-pyramid says what is wrong in one line") {
