@@ -12,6 +12,11 @@ find_package(TinyGLTF REQUIRED)
 # JPEG 2000, RLE), which a hand-written reader could not match (lib/volsg/volumeio).
 find_package(GDCM REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
+# OME-Zarr chunks (lib/volsg/volumeio/OMEZARR.md): Debian's zstd and blosc are the codecs
+# python-zarr itself uses (blosc with its lz4, zstd and zlib inner codecs and shuffles), so
+# volsg reads what those tools write without a decompressor of its own.
+pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
+pkg_check_modules(BLOSC REQUIRED IMPORTED_TARGET blosc)
 # Texture image files: libsimage is the loader Coin itself uses, so a Texture2 reads exactly
 # the formats an Inventor file may name (SGI .rgb, PNG, JPEG, GIF, TIFF).
 pkg_check_modules(SIMAGE REQUIRED IMPORTED_TARGET simage)

@@ -31,13 +31,16 @@ ref_ptr<VolumeGrid> readRawVolume(const std::string& path, const RawVolumeLayout
 ref_ptr<VolumeGrid> readVolume(const std::string& path, const RawVolumeLayout* rawLayout,
                                std::uint64_t byteLimit) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return readDicomSeries(path, byteLimit);
+    if (std::filesystem::is_directory(path, ec))
+        return isZarrFolder(path) ? readOmeZarr(path, 0, byteLimit)
+                                  : readDicomSeries(path, byteLimit);
     const std::string name =
         HeaderLineReader::lowercase(std::filesystem::path(path).filename().string());
     const auto endsWith = [&](std::string_view tail) {
         return name.size() >= tail.size() &&
                name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
     };
+    if (endsWith(".zarr")) return readOmeZarr(path, 0, byteLimit); // says it is no folder
     if (endsWith(".nrrd") || endsWith(".nhdr")) return readNrrd(path, byteLimit);
     if (endsWith(".mhd") || endsWith(".mha")) return readMetaImage(path, byteLimit);
     if (endsWith(".nii") || endsWith(".nii.gz") || endsWith(".hdr") || endsWith(".hdr.gz"))

@@ -1,6 +1,7 @@
 #pragma once
 // Readers for volume files: raw (plain or gzip), NRRD (.nrrd/.nhdr), MetaImage (.mhd/.mha),
-// NIfTI-1/2 (.nii, .nii.gz, .hdr/.img) and DICOM series (a folder, or one file of the series).
+// NIfTI-1/2 (.nii, .nii.gz, .hdr/.img), DICOM series (a folder, or one file of the series) and
+// OME-Zarr multiscale images (a .zarr folder).
 
 #include <cstdint>
 #include <string>
@@ -78,10 +79,28 @@ ref_ptr<VolumeGrid> readNifti(const std::string& path,
 ref_ptr<VolumeGrid> readDicomSeries(const std::string& path,
                                     std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
 
+/// One level of an OME-Zarr image (OME-NGFF 0.4 `multiscales` over Zarr v2 arrays;
+/// lib/volsg/volumeio/OMEZARR.md): `path` is the image's folder (with .zattrs) and `level` 0 the
+/// finest, or `path` is one level's array folder (with .zarray; `level` must then be 0), whose
+/// spacing comes from the image around it when that lists it. Arrays of 3 axes (z, y, x) or 4
+/// or 5 (t, c, z, y, x): the volume is t = 0, c = 0. dtypes |u1 <u2 >u2 <i2 >i2 <f4 >f4;
+/// order C; compressor null, zlib, gzip, zstd or blosc; dimension_separator "." or "/". A
+/// missing chunk file holds fill_value (Zarr's rule). Spacing is the level's scale (times the
+/// image's), in the axes' unit. geometry() is known only for pyramids volsg wrote from a placed
+/// volume (multiscales[0].metadata.volsg, moved to the level by its translation). Errors name the
+/// .zattrs, .zarray or chunk file: malformed JSON, unsupported metadata, a chunk that does
+/// not decompress to exactly the chunk's bytes, a chunk file outside the declared shape.
+ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level = 0,
+                                std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
+
+/// True when `path` is a folder named *.zarr or holding .zattrs, .zgroup or .zarray.
+bool isZarrFolder(const std::string& path);
+
 /// True when `path` is a DICOM Part 10 file ("DICM" after the 128-byte preamble).
 bool isDicomFile(const std::string& path);
 
-/// Picks the reader: a folder or a DICOM file (by its magic, or .dcm) is a DICOM series;
+/// Picks the reader: a Zarr folder (isZarrFolder) is OME-Zarr at level 0; another folder or a
+/// DICOM file (by its magic, or .dcm) is a DICOM series;
 /// .nrrd .nhdr .mhd .mha .nii .nii.gz (.hdr with a NIfTI magic) by extension,
 /// case-insensitive; any other file is raw and needs `rawLayout`.
 ref_ptr<VolumeGrid> readVolume(const std::string& path, const RawVolumeLayout* rawLayout = nullptr,

@@ -138,7 +138,8 @@ FileKind fileKindOf(const std::string& path, const OpenFileOptions& options) {
 
 ref_ptr<Node> sceneForVolumeFile(const std::string& path, const OpenFileOptions& options) {
     const ref_ptr<VolumeGrid> grid = readVolume(path, options.raw ? &*options.raw : nullptr);
-    const std::filesystem::path file(path);
+    std::filesystem::path file(path);
+    if (file.filename().empty()) file = file.parent_path(); // "head.zarr/" names head.zarr
 
     auto data = VolumeData::create();
     data->fileName = file.filename().string();
