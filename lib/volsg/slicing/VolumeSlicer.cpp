@@ -98,12 +98,13 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
     if (!(target > 0.0) || volume.mode == VolumeRenderMode::AVERAGE || settings.nearest)
         return settings;
     // What the model leaves out (BoxClip, clip planes, planeOpacity, opaque geometry ending
-    // rays) adds boundaries inside slabs and silhouettes it does not sample: the model is
-    // asked for half the target there (README, "Error targets": what this does and does not
-    // cover).
+    // rays, a near plane cutting the box: the camera inside) adds boundaries inside slabs and
+    // silhouettes it does not sample: the model is asked for half the target there (README,
+    // "Error targets": what this does and does not cover).
+    const bool nearCutsBox = local.clipDepth.x > local.boxDepth.x;
     const bool outsideModel = volume.boxClip || !volume.clipPlanes.empty() ||
                               planeOpacityMatters(volume.planeOpacity) ||
-                              frame.shapes.drawsLastFrame() > 0;
+                              frame.shapes.drawsLastFrame() > 0 || nearCutsBox;
     const double modelTarget = outsideModel ? 0.5 * target : target;
     const auto started = std::chrono::steady_clock::now();
     if (!v.errorModel || v.errorModelKey != volume.transferKey ||
