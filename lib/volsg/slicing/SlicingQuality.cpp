@@ -21,7 +21,7 @@ constexpr int kMaxAutoSamples = 64;
 constexpr double kMinAutoPlanes = 1.0;
 /// Samples per L0 searched: 2^(j/2) for j in [kLowestStep, kHighestStep].
 constexpr int kLowestStep = -16; // 1/256
-constexpr int kHighestStep = 8;  // 16
+constexpr int kHighestStep = 10; // 32
 
 /// Spacing rounded to 3 significant digits, so views that differ a little share a cache key.
 double roundedSpacing(double s) {
