@@ -220,6 +220,7 @@ private:
     /// asked for `scriptName`. Returns whether it is open.
     bool panelSection(const char* title, bool& open, const char* scriptName);
     void drawScenePanel();
+    void drawVolumeQuality();
     void drawViewControls();
     void drawOrientationControls();
     void drawSceneTree(Node& node, int depth);

@@ -7,6 +7,7 @@
 #include <GLFW/glfw3.h>
 
 #include "Viewer.h"
+#include "VolumeReport.h"
 
 #include <algorithm>
 
@@ -17,7 +18,9 @@
 #include <volsg/manipulators/Manipulator.h>
 #include <volsg/nodes/BoxClip.h>
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Transform.h>
+#include <volsg/nodes/Volume.h>
 #include <volsg/nodes/VolumeSeries.h> // complete for SeriesPanel's ref_ptr
 #include <volsg/volumescene/SceneForFile.h>
 
@@ -99,6 +102,46 @@ void Viewer::drawPanels() {
     ImGui::End();
 }
 
+namespace {
+
+/// The errorTarget fields of every Volume and ShearWarpVolume under `node`.
+void collectErrorTargets(Node& node, std::vector<SFFloat*>& out) {
+    if (node.isA<Volume>()) out.push_back(&static_cast<Volume&>(node).errorTarget);
+    if (node.isA<ShearWarpVolume>())
+        out.push_back(&static_cast<ShearWarpVolume&>(node).errorTarget);
+    if (auto* children = node.children())
+        for (const auto& child : *children)
+            if (child) collectErrorTargets(*child, out);
+}
+
+} // namespace
+
+/// The volumes' quality: one slider sets every volume node's errorTarget (the RMSE a still
+/// frame may have, an undoable edit), and a line per volume says what its last frame drew
+/// with and the error it predicts (as volsg-render --verbose prints it).
+void Viewer::drawVolumeQuality() {
+    if (!root_) return;
+    std::vector<SFFloat*> targets;
+    collectErrorTargets(*root_, targets);
+    if (targets.empty()) return;
+    float target = (*targets.front())();
+    const float width = std::max(80.0f, ImGui::GetContentRegionAvail().x - 150.0f);
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::SliderFloat("error target /255", &target, 0.1f, 8.0f, "%.2f",
+                           ImGuiSliderFlags_Logarithmic)) {
+        if (!history_.isOpen())
+            history_.begin("error target", std::vector<Field*>(targets.begin(), targets.end()));
+        for (SFFloat* field : targets)
+            *field = target;
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) history_.commit();
+    // The slider's frame, without its label (a script's errorTarget:U,V).
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    canvases_["errorTarget"] = {glm::vec2(lo.x, lo.y), glm::vec2(lo.x + width, hi.y)};
+    for (const std::string& line : cli::volumeQualityLines(*root_))
+        ImGui::TextWrapped("%s", line.c_str());
+}
+
 void Viewer::drawScenePanel() {
     ImGui::Text("%.1f fps  frame %.0f ms  render %.0f ms",
                 lastFrameMs_ > 0 ? 1000.0 / lastFrameMs_ : 0.0, lastFrameMs_, lastRenderMs_);
@@ -107,6 +150,7 @@ void Viewer::drawScenePanel() {
                 options_.antialias == Antialias::Multisample   ? "  AA msaa 4x"
                 : options_.antialias == Antialias::Supersample ? "  AA 2x2"
                                                                : "");
+    drawVolumeQuality();
     if (ImGui::Button("view all")) navigation_->viewAll(sceneBox());
     ImGui::SameLine();
     if (ImGui::Button("home")) navigation_->goHome();

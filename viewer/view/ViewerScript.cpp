@@ -85,7 +85,7 @@ struct LineReader {
             const auto v = triple(rest, 3);
             p.kind = ScriptPoint::Kind::World;
             p.value = {v[0], v[1], v[2]};
-        } else if (place == "tf" || place == "planeOpacity") {
+        } else if (place == "tf" || place == "planeOpacity" || place == "errorTarget") {
             const auto v = triple(rest, 2);
             p.kind = ScriptPoint::Kind::Canvas;
             p.canvas = place;
@@ -105,7 +105,8 @@ struct LineReader {
             p.canvas = rest;
             if (rest.empty()) fail("expected dialog:NAME, got '" + w + "'");
         } else {
-            fail("unknown place '" + place + "' (world, tf, planeOpacity, view, dialog)");
+            fail("unknown place '" + place +
+                 "' (world, tf, planeOpacity, errorTarget, view, dialog)");
         }
         return p;
     }

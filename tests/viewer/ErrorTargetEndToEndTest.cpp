@@ -1,0 +1,80 @@
+// volsg-view's error-target slider under Xvfb: dragging it sets every volume node's errorTarget
+// (the Volume then draws fewer planes, as its line in the Scene panel says), and ctrl+z puts
+// the old target back. Skips itself without xvfb-run.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <unistd.h>
+
+#include <volsg/actions/SearchAction.h>
+#include <volsg/io/SceneReader.h>
+#include <volsg/nodes/Volume.h>
+
+#include "ViewerTestSupport.h"
+
+using namespace volsg;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readAll(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+float savedErrorTarget(const fs::path& scene) {
+    ref_ptr<Node> root = readScene(scene.string());
+    const auto volumes = findAll(*root, Volume::classType());
+    REQUIRE(volumes.size() == 1);
+    return static_cast<Volume*>(volumes.front())->errorTarget();
+}
+
+} // namespace
+
+TEST_CASE("the error-target slider sets the volumes' target, and undo restores it") {
+    if (!haveXvfbRun()) {
+        MESSAGE("xvfb-run is not installed: the viewer error-target test is skipped");
+        return;
+    }
+    const fs::path dir =
+        fs::temp_directory_path() / ("volsg-view-target-" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path scene = dir / "scene.iv", looser = dir / "looser.iv", undone = dir / "undone.iv";
+    std::ofstream(scene) << "#Inventor V2.1 ascii\n"
+                            "Separator {\n"
+                            "  VolumeData { generator SOFT_SPHERE dimensions 16 16 16 }\n"
+                            "  TransferFunction { alpha [ 0 0, 1 0.6 ] }\n"
+                            "  Volume { }\n"
+                            "}\n";
+    {
+        std::ofstream script(dir / "script.txt");
+        script << "wait 1\n"
+               // The slider is logarithmic from 0.1 to 8/255: near its right end is about 6.
+               << "drag left errorTarget:0.5,0.5 errorTarget:0.95,0.5 2\n"
+               << "wait 1\n"
+               << "save " << looser.string() << "\n"
+               << "move 5 5\n"
+               << "key z ctrl\n"
+               << "wait 1\n"
+               << "save " << undone.string() << "\n"
+               << "quit\n";
+    }
+    const std::string viewer = std::string(VOLSG_BINARY_DIR) + "/viewer/volsg-view";
+    const std::string command = "cd " + dir.string() + " && " + sanitizerEnvironment() +
+                                "XDG_CONFIG_HOME='" + testConfigHome() +
+                                "' xvfb-run -a -s '-screen 0 1280x800x24' " + viewer + " " +
+                                scene.string() + " --size 900x500 --script " +
+                                (dir / "script.txt").string() + " > log.txt 2>&1";
+    const int status = std::system(command.c_str());
+    INFO("viewer output: " << readAll(dir / "log.txt"));
+    REQUIRE(status == 0);
+    CHECK(savedErrorTarget(looser) > 4.0f);
+    CHECK(savedErrorTarget(undone) == doctest::Approx(0.5f));
+    fs::remove_all(dir);
+}
