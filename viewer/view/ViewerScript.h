@@ -46,10 +46,11 @@
 //
 // A point X Y is window pixels (origin top-left), or one word naming a place that is resolved
 // when the step runs: `tf:U,V` / `planeOpacity:U,V` (U, V in [0, 1] across a panel's curve
-// canvas, V up; `errorTarget:U,V` across the Scene panel's error-target slider), `world:X,Y,Z` (where a world point shows in the 3D view) or `view:NAME:U,V`
-// (U, V in [0, 1] across a view of the four-view layout, V up; NAME: 3d axial coronal
-// sagittal), or `dialog:NAME`, the middle of a row or control of the open dialog as last drawn:
-// a listed file or folder by its name, or up, path, showall, raw, dims, open, cancel. Keys
+// canvas, V up; `errorTarget:U,V` across the Scene panel's error-target slider),
+// `world:X,Y,Z` (where a world point shows in the 3D view) or `view:NAME:U,V` (U, V in
+// [0, 1] across a view of the four-view layout, V up; NAME: 3d axial coronal sagittal), or
+// `dialog:NAME`, the middle of a row or control of the open dialog as last drawn: a listed file or
+// folder by its name, or up, path, showall, raw, dims, open, cancel. Keys
 // (`key`) and typed text also reach the dialog's fields; in a scripted session the UI's clock
 // steps 1/30 s a frame, so two clicks on one row within 9 frames are a double-click.
 
