@@ -4,6 +4,7 @@
 // LPS); each reader must give back those numbers and the head CT's voxels. Malformed files are
 // written by the test.
 
+#include "support/TempDir.h"
 #include <doctest/doctest.h>
 
 #include <atomic>
@@ -70,24 +71,10 @@ void checkWrittenGeometry(const VolumeGrid& grid, double tolerance) {
     }
 }
 
-class TempDir {
+/// This file's temporary folders.
+class TempDir : public volsg::test::TempDir {
 public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        path_ = fs::temp_directory_path() /
-                ("volsg-medical-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
+    TempDir() : volsg::test::TempDir("volsg-medical") {}
 };
 
 void writeBytes(const std::string& path, const std::vector<unsigned char>& bytes) {

@@ -1,6 +1,7 @@
 // Volume file readers: every file is written by the test into a temporary folder, byte by byte,
 // and every voxel read back is compared exactly with the value that was written.
 
+#include "support/TempDir.h"
 #include <doctest/doctest.h>
 
 #include <atomic>
@@ -24,24 +25,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh folder per test, removed afterwards.
-class TempDir {
+/// This file's temporary folders.
+class TempDir : public volsg::test::TempDir {
 public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        path_ = fs::temp_directory_path() /
-                ("volsg-readers-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    fs::path path_;
+    TempDir() : volsg::test::TempDir("volsg-readers") {}
 };
 
 void writeFile(const std::string& path, const std::string& bytes) {

@@ -2,6 +2,7 @@
 // What the OME-Zarr tests share: a temporary folder, file bytes, patterned grids and the one
 // line an Error says.
 
+#include "support/TempDir.h"
 #include <doctest/doctest.h>
 
 #include <atomic>
@@ -21,24 +22,10 @@ namespace zarrtest {
 
 namespace fs = std::filesystem;
 
-// A fresh folder per test, removed afterwards.
-class TempDir {
+/// This file's temporary folders.
+class TempDir : public volsg::test::TempDir {
 public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        path_ = fs::temp_directory_path() /
-                ("volsg-zarr-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    fs::path path_;
+    TempDir() : volsg::test::TempDir("volsg-zarr") {}
 };
 
 inline void writeFile(const std::string& path, const std::string& bytes) {

@@ -3,6 +3,7 @@
 // where a viewer saves it, and what that scene shows: a ball of tissue in air, rendered by GL
 // and by the reference ray caster, visible in the middle and transparent air around it.
 
+#include "support/TempDir.h"
 #include <doctest/doctest.h>
 
 #include <atomic>
@@ -37,23 +38,10 @@ namespace {
 
 const std::string data = VOLSG_DATA_DIR;
 
-class TempDir {
+/// This file's temporary folders.
+class TempDir : public volsg::test::TempDir {
 public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        path_ = fs::temp_directory_path() /
-                ("volsg-open-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    fs::path path_;
+    TempDir() : volsg::test::TempDir("volsg-open") {}
 };
 
 template <class T> T* child(Node& root) {
