@@ -1,31 +1,23 @@
-// volsg-view's error-target slider under Xvfb: dragging it sets every volume node's errorTarget
+// volsg-view's error-target slider under Xvfb: dragging it sets every volume node's errorTarget,
 // (the Volume then draws fewer planes, as its line in the Scene panel says), and ctrl+z puts
 // the old target back. Skips itself without xvfb-run.
 #include <doctest/doctest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
-
-#include <unistd.h>
 
 #include <volsg/actions/SearchAction.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/nodes/Volume.h>
 
 #include "ViewerTestSupport.h"
+#include "support/TempDir.h"
 
 using namespace volsg;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 float savedErrorTarget(const fs::path& scene) {
     ref_ptr<Node> root = readScene(scene.string());
@@ -41,10 +33,8 @@ TEST_CASE("the error-target slider sets the volumes' target, and undo restores i
         MESSAGE("xvfb-run is not installed: the viewer error-target test is skipped");
         return;
     }
-    const fs::path dir =
-        fs::temp_directory_path() / ("volsg-view-target-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const volsg::test::TempDir temp("volsg-view-target");
+    const fs::path& dir = temp.path();
     const fs::path scene = dir / "scene.iv", looser = dir / "looser.iv", undone = dir / "undone.iv";
     std::ofstream(scene) << "#Inventor V2.1 ascii\n"
                             "Separator {\n"
@@ -65,16 +55,11 @@ TEST_CASE("the error-target slider sets the volumes' target, and undo restores i
                << "save " << undone.string() << "\n"
                << "quit\n";
     }
-    const std::string viewer = std::string(VOLSG_BINARY_DIR) + "/viewer/volsg-view";
-    const std::string command = "cd " + dir.string() + " && " + sanitizerEnvironment() +
-                                "XDG_CONFIG_HOME='" + testConfigHome() +
-                                "' xvfb-run -a -s '-screen 0 1280x800x24' " + viewer + " " +
-                                scene.string() + " --size 900x500 --script " +
-                                (dir / "script.txt").string() + " > log.txt 2>&1";
-    const int status = std::system(command.c_str());
-    INFO("viewer output: " << readAll(dir / "log.txt"));
+    std::string log;
+    const int status =
+        runViewerScript(scene.string(), "--size 900x500", (dir / "script.txt").string(), log);
+    INFO("viewer output: " << log);
     REQUIRE(status == 0);
     CHECK(savedErrorTarget(looser) > 4.0f);
     CHECK(savedErrorTarget(undone) == doctest::Approx(0.5f));
-    fs::remove_all(dir);
 }
