@@ -1,6 +1,5 @@
-// volsg-view's error-target slider under Xvfb: dragging it sets every volume node's errorTarget,
-// (the Volume then draws fewer planes, as its line in the Scene panel says), and ctrl+z puts
-// the old target back. Skips itself without xvfb-run.
+// volsg-view's error-target slider under Xvfb: dragging it sets the volume nodes' errorTarget
+// (saved with the scene), and ctrl+z puts the old target back. Skips itself without xvfb-run.
 #include <doctest/doctest.h>
 
 #include <filesystem>
