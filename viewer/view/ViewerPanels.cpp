@@ -13,6 +13,7 @@
 
 #include <imgui.h>
 
+#include <volsg/actions/SearchAction.h>
 #include <volsg/editors/panels/MaterialPanel.h>
 #include <volsg/editors/panels/PlaneOpacityPanel.h>
 #include <volsg/manipulators/Manipulator.h>
@@ -102,27 +103,16 @@ void Viewer::drawPanels() {
     ImGui::End();
 }
 
-namespace {
-
-/// The errorTarget fields of every Volume and ShearWarpVolume under `node`.
-void collectErrorTargets(Node& node, std::vector<SFFloat*>& out) {
-    if (node.isA<Volume>()) out.push_back(&static_cast<Volume&>(node).errorTarget);
-    if (node.isA<ShearWarpVolume>())
-        out.push_back(&static_cast<ShearWarpVolume&>(node).errorTarget);
-    if (auto* children = node.children())
-        for (const auto& child : *children)
-            if (child) collectErrorTargets(*child, out);
-}
-
-} // namespace
-
 /// The volumes' quality: one slider sets every volume node's errorTarget (the RMSE a still
 /// frame may have, an undoable edit), and a line per volume says what its last frame drew
 /// with and the error it predicts (as volsg-render --verbose prints it).
 void Viewer::drawVolumeQuality() {
     if (!root_) return;
     std::vector<SFFloat*> targets;
-    collectErrorTargets(*root_, targets);
+    for (Node* n : findAll(*root_, Volume::classType()))
+        targets.push_back(&static_cast<Volume*>(n)->errorTarget);
+    for (Node* n : findAll(*root_, ShearWarpVolume::classType()))
+        targets.push_back(&static_cast<ShearWarpVolume*>(n)->errorTarget);
     if (targets.empty()) return;
     float target = (*targets.front())();
     const float width = std::max(80.0f, ImGui::GetContentRegionAvail().x - 150.0f);
