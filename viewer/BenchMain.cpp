@@ -68,6 +68,7 @@ const char* usage =
     "       every form also takes the debug switches [--no-empty-cells]\n"
     "                   [--no-texture-staging] [--max-3d-texture N] [--scalar-kernels]\n"
     "                   [--byte-target] [--no-render-caching] [--no-batching]\n"
+    "                   [--no-shape-detail]\n"
     "                   [--per-fragment-lighting | --per-vertex-lighting]\n"
     "  --error         also compare K of the frames with the reference ray caster (same\n"
     "                  views, same size): RMSE, PSNR and max abs error\n"
@@ -113,6 +114,8 @@ const char* usage =
     "                        pixels are read (the default only for 8-bit output)\n"
     "  --no-render-caching   Separators traverse every frame (no render caches)\n"
     "  --no-batching         opaque shapes drawn one by one, not as instanced batches\n"
+    "  --no-shape-detail     spheres, cones and cylinders always drawn from their full\n"
+    "                        tessellation (not the coarser ones small projections allow)\n"
     "  --per-fragment-lighting, --per-vertex-lighting  shapes sum their lights there, not\n"
     "                        where the error model chooses (VertexLighting.h)\n"
     "  --suite coin    the same files through Coin3D (SoGLRenderAction, caching AUTO, +\n"
@@ -480,6 +483,7 @@ int run(cli::Arguments& args) {
         .flag("--byte-target", st.options.debug.byteTarget)
         .flag("--no-render-caching", st.options.debug.renderCaching, false)
         .flag("--no-batching", st.options.debug.batchShapes, false)
+        .flag("--no-shape-detail", st.options.debug.shapeDetail, false)
         .add("--per-fragment-lighting",
              [&](cli::Arguments&, const std::string&) {
                  st.options.debug.shapeLighting = RenderDebug::Lighting::PerFragment;

@@ -36,4 +36,12 @@ struct Mesh {
     }
 };
 
+/// A coarser tessellation of a curved shape than its mesh, with the largest distance of its
+/// surface from the true one (the shape's own units): what lets a renderer draw it instead where
+/// that distance projects below a fraction of a pixel (lib/volsg/render/ShapeDetail.h).
+struct CoarserMesh {
+    Mesh mesh;
+    double deviation = 0.0;
+};
+
 } // namespace volsg

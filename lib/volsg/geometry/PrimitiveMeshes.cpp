@@ -245,4 +245,24 @@ int roundSlicesFor(float complexity) {
     return std::clamp(coinCount(40.0f, complexity, 4.0f), 4, 128);
 }
 
+double sphereMeshDeviation(float radius, int slices, int stacks) {
+    constexpr double pi = std::numbers::pi;
+    return std::abs(double(radius)) *
+           (1.0 - std::cos(pi / std::max(slices, 3)) * std::cos(pi / (2.0 * std::max(stacks, 1))));
+}
+
+double roundMeshDeviation(float radius, int slices) {
+    constexpr double pi = std::numbers::pi;
+    return std::abs(double(radius)) * (1.0 - std::cos(pi / std::max(slices, 3)));
+}
+
+std::vector<int> coarserSliceCounts(int slices, int minimum) {
+    std::vector<int> out;
+    for (int s = (2 * slices) / 3; slices > minimum; s = (2 * s) / 3) {
+        slices = std::max(s, minimum);
+        out.push_back(slices);
+    }
+    return out;
+}
+
 } // namespace volsg

@@ -21,6 +21,16 @@ int sphereStacksFor(float complexity);
 /// Sides of a cone or cylinder.
 int roundSlicesFor(float complexity);
 
+/// The largest distance of buildSphereMesh's surface from its sphere: at the middle of the
+/// widest band's facets, |radius| (1 - cos(pi / slices) cos(pi / (2 stacks))).
+double sphereMeshDeviation(float radius, int slices, int stacks);
+/// The same for the round sides of a cone or cylinder with `slices` sides and their disks: the
+/// sagitta |radius| (1 - cos(pi / slices)) of the base circle's chords.
+double roundMeshDeviation(float radius, int slices);
+/// The side counts of the coarser tessellations below `slices` (a detail chain), each about
+/// 2/3 of the one before, finest first, down to `minimum` (Coin's least count for the shape).
+std::vector<int> coarserSliceCounts(int slices, int minimum);
+
 /// Where each part of a primitive starts among the mesh's vertices (for PER_PART materials):
 /// parts appear in Inventor's part order and end where the next begins.
 using PartStarts = std::vector<std::uint32_t>;

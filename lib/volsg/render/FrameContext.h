@@ -74,6 +74,9 @@ struct RenderDebug {
     bool renderCulling = true;
     /// Opaque shapes are drawn batched: instanced draws grouped by state (ShapeRenderer).
     bool batchShapes = true;
+    /// Spheres, cones and cylinders a few pixels wide are drawn from coarser tessellations
+    /// within kShapeDetailPixels of their surface (ShapeDetail.h).
+    bool shapeDetail = true;
     /// Where shapes sum their lights: per vertex where that matches per fragment within
     /// kVertexLightingTolerance (Automatic, VertexLighting.h), or always in one of the two.
     enum class Lighting { Automatic, PerFragment, PerVertex };
@@ -107,6 +110,8 @@ struct FrameContext {
     std::size_t replayedShapes = 0;
     /// Separators left out in this render because their cached bounds lie outside the view.
     std::size_t culledSeparators = 0;
+    /// Shapes drawn from a coarser tessellation in this render (ShapeDetail.h).
+    std::size_t coarserShapes = 0;
     /// Screen-text characters laid out so far in this frame (limits::maxFrameTextGlyphs).
     std::uint64_t textGlyphs = 0;
 };

@@ -14,6 +14,7 @@
 namespace volsg {
 
 class ShapeRenderer;
+struct ShapeDetail;
 
 /// One per RenderCache (RenderCache::shared): the live GpuMeshes by the hash of their content.
 /// A mesh stays while someone holds it (a shape's cache entry, a render cache's record).
@@ -35,9 +36,11 @@ private:
     std::size_t insertsSincePrune_ = 0;
 };
 
-/// What a shape node keeps per mesh key in the RenderCache: its shared mesh.
+/// What a shape node keeps per mesh key in the RenderCache: its shared mesh, and its coarser
+/// ones for small projections (null for shapes without).
 struct ShapeMesh {
     std::shared_ptr<GpuMesh> gpu;
+    std::shared_ptr<const ShapeDetail> detail;
 };
 
 } // namespace volsg

@@ -33,4 +33,20 @@ void Cone::buildMesh(const State& state, Mesh& out) const {
     colorPrimitiveParts(state, starts, built, out);
 }
 
+void Cone::buildCoarserMeshes(const State& state, std::vector<CoarserMesh>& out) const {
+    const int p = parts();
+    const int slices = roundSlicesFor(primitiveComplexity(state, objectBox()));
+    std::vector<int> built;
+    if (p & SIDES) built.push_back(0);
+    if (p & BOTTOM) built.push_back(1);
+    for (int s : coarserSliceCounts(slices, 4)) {
+        CoarserMesh& level = out.emplace_back();
+        PartStarts starts;
+        buildConeMesh(bottomRadius(), height(), (p & SIDES) != 0, (p & BOTTOM) != 0, s, level.mesh,
+                      &starts);
+        colorPrimitiveParts(state, starts, built, level.mesh);
+        level.deviation = roundMeshDeviation(bottomRadius(), s);
+    }
+}
+
 } // namespace volsg

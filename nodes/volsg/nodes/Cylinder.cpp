@@ -35,4 +35,21 @@ void Cylinder::buildMesh(const State& state, Mesh& out) const {
     colorPrimitiveParts(state, starts, built, out);
 }
 
+void Cylinder::buildCoarserMeshes(const State& state, std::vector<CoarserMesh>& out) const {
+    const int p = parts();
+    const int slices = roundSlicesFor(primitiveComplexity(state, objectBox()));
+    std::vector<int> built;
+    if (p & SIDES) built.push_back(0);
+    if (p & TOP) built.push_back(1);
+    if (p & BOTTOM) built.push_back(2);
+    for (int s : coarserSliceCounts(slices, 4)) {
+        CoarserMesh& level = out.emplace_back();
+        PartStarts starts;
+        buildCylinderMesh(radius(), height(), (p & SIDES) != 0, (p & TOP) != 0, (p & BOTTOM) != 0,
+                          s, level.mesh, &starts);
+        colorPrimitiveParts(state, starts, built, level.mesh);
+        level.deviation = roundMeshDeviation(radius(), s);
+    }
+}
+
 } // namespace volsg

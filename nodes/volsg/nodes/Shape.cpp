@@ -26,4 +26,6 @@ std::uint64_t Shape::meshKey(const State& state) const {
     return combineMeshKey(version(), gatherShapeState(state, nullptr).meshKey());
 }
 
+void Shape::buildCoarserMeshes(const State&, std::vector<CoarserMesh>&) const {}
+
 } // namespace volsg

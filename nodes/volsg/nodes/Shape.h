@@ -4,6 +4,7 @@
 // the bounding box and pick actions).
 
 #include <cstdint>
+#include <vector>
 
 #include <volsg/core/Node.h>
 #include <volsg/geometry/Mesh.h>
@@ -24,6 +25,11 @@ public:
     /// Identifies everything the mesh depends on; the node's version by default. Shapes that
     /// read state (IndexedFaceSet reads Coordinate3 and Normal) combine their versions.
     virtual std::uint64_t meshKey(const State& state) const;
+    /// Coarser tessellations of mesh(state), finest first, for shapes that tessellate a curved
+    /// surface (Sphere, Cone, Cylinder); none by default. Renderers draw one where its deviation
+    /// projects below a fraction of a pixel (lib/volsg/render/ShapeDetail.h); bounding boxes
+    /// and picking keep mesh(state).
+    virtual void buildCoarserMeshes(const State& state, std::vector<CoarserMesh>& out) const;
 
 protected:
     ~Shape() override = default;

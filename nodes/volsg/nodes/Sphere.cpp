@@ -3,6 +3,7 @@
 #include <volsg/nodes/PrimitiveComplexity.h>
 #include <volsg/nodes/Sphere.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace volsg {
@@ -21,6 +22,21 @@ std::uint64_t Sphere::meshKey(const State& state) const {
 void Sphere::buildMesh(const State& state, Mesh& out) const {
     const float c = primitiveComplexity(state, objectBox());
     buildSphereMesh(radius(), sphereSlicesFor(c), sphereStacksFor(c), out);
+}
+
+void Sphere::buildCoarserMeshes(const State& state, std::vector<CoarserMesh>& out) const {
+    const float c = primitiveComplexity(state, objectBox());
+    const int slices = sphereSlicesFor(c), stacks = sphereStacksFor(c);
+    // Half as many bands as sides balances the two terms of the deviation: the first level
+    // keeps the sides and halves Coin's bands, the next ones have fewer sides too.
+    std::vector<int> sides = coarserSliceCounts(slices, 4);
+    if ((slices + 1) / 2 < stacks) sides.insert(sides.begin(), slices);
+    for (int s : sides) {
+        const int bands = std::clamp((s + 1) / 2, 2, stacks);
+        CoarserMesh& level = out.emplace_back();
+        buildSphereMesh(radius(), s, bands, level.mesh);
+        level.deviation = sphereMeshDeviation(radius(), s, bands);
+    }
 }
 
 } // namespace volsg

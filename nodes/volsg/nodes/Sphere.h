@@ -16,6 +16,7 @@ public:
 
     /// Also the tessellation (SCREEN_SPACE complexity changes it with the view).
     std::uint64_t meshKey(const State& state) const override;
+    void buildCoarserMeshes(const State& state, std::vector<CoarserMesh>& out) const override;
     /// The box the tessellation's screen size is measured by (Coin's computeBBox).
     Box3 objectBox() const;
 

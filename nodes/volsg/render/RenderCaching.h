@@ -15,6 +15,7 @@
 #include <volsg/core/Node.h>
 #include <volsg/math/Box3.h>
 #include <volsg/render/GpuMesh.h>
+#include <volsg/render/ShapeDetail.h>
 #include <volsg/render/ShapeRenderer.h>
 
 namespace volsg {
@@ -29,6 +30,7 @@ struct ShapeRecord {
     std::shared_ptr<const ShapeTexture> texture; ///< keeps look.texturing.texture alive
     ShapeLook look; ///< model: world while recording, relative to the Separator in a cache
     bool transparent = false;
+    std::shared_ptr<const ShapeDetail> detail; ///< coarser meshes drawn when small, or null
 };
 
 /// A node the cache depends on and its version when recorded. Held, so a node removed from

@@ -261,6 +261,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     stats.batches = shapes.batchesLastFrame();
     stats.replayedShapes = frame.replayedShapes;
     stats.culledSeparators = frame.culledSeparators;
+    stats.coarserShapes = frame.coarserShapes;
     stats.litShapes = shapes.litLastFrame();
     stats.vertexLitShapes = shapes.vertexLitLastFrame();
     stats.batchedShapes = shapes.batchedShapesLastFrame();

@@ -53,6 +53,7 @@ struct RenderStats {
     std::size_t batchedShapes = 0;    ///< the shapes those draws drew
     std::size_t replayedShapes = 0;   ///< shapes drawn from Separators' render caches, last frame
     std::size_t culledSeparators = 0; ///< Separators outside the view, not drawn, last frame
+    std::size_t coarserShapes = 0;    ///< drawn from a coarser tessellation (ShapeDetail.h)
     std::size_t litShapes = 0;        ///< shapes drawn lit in the last frame
     std::size_t vertexLitShapes = 0;  ///< of those, lit per vertex (VertexLighting.h)
     std::size_t meshBytes = 0;        ///< GPU bytes of the (shared) shape meshes alive

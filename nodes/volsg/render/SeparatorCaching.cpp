@@ -74,7 +74,8 @@ void replay(RenderAction& action, const SeparatorCache& cache, bool transparent)
         look.model = entry * r.look.model;
         look.lights = lights;
         look.clipPlanes = clipPlanes;
-        frame.shapes.submit(frame, *r.mesh, look);
+        const GpuMesh& mesh = r.detail ? r.detail->chooseFor(frame, look.model, *r.mesh) : *r.mesh;
+        frame.shapes.submit(frame, mesh, look);
         ++frame.replayedShapes;
     }
 }

@@ -20,6 +20,7 @@
 #include <volsg/render/GpuMesh.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/RenderCaching.h>
+#include <volsg/render/ShapeDetail.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/render/SharedMeshes.h>
 
@@ -99,6 +100,25 @@ ShapeTexturing texturingOf(FrameContext& frame, const ShapeState& shape,
     return out;
 }
 
+/// The shape's coarser meshes on the GPU (shared by equal content), or null without any.
+std::shared_ptr<const ShapeDetail> detailOf(FrameContext& frame, const Shape& shape,
+                                            const State& state, const GpuMesh& full) {
+    thread_local std::vector<CoarserMesh> coarser;
+    coarser.clear();
+    shape.buildCoarserMeshes(state, coarser);
+    if (coarser.empty() || full.bounds.isEmpty()) return nullptr;
+    auto detail = std::make_shared<ShapeDetail>();
+    for (const CoarserMesh& c : coarser)
+        detail->levels.push_back(
+            {frame.cache.shared<SharedMeshes>().find(c.mesh, frame.shapes), c.deviation});
+    detail->centre = 0.5 * (full.bounds.min + full.bounds.max);
+    // The coarser meshes' vertices lie on the true surface, which the full mesh's box may not
+    // reach: its half diagonal plus a deviation larger than the full mesh's encloses them.
+    detail->radius =
+        0.5 * glm::length(full.bounds.max - full.bounds.min) + detail->levels.front().deviation;
+    return detail;
+}
+
 void renderShape(RenderAction& action, Shape& shape) {
     if (action.pass() == RenderPass::Volume) return;
     FrameContext& frame = action.frame();
@@ -108,9 +128,12 @@ void renderShape(RenderAction& action, Shape& shape) {
     const ShapeState scope = gatherShapeState(state, own);
     if (scope.drawStyle && scope.drawStyle->style() == DrawStyle::INVISIBLE) return;
     ShapeMesh& entry = frame.cache.get<ShapeMesh>(shape, shape.meshKey(state));
-    if (!entry.gpu)
+    if (!entry.gpu) {
         entry.gpu = frame.cache.shared<SharedMeshes>().find(shape.mesh(state), frame.shapes);
-    const GpuMesh& gpu = *entry.gpu;
+        entry.detail = detailOf(frame, shape, state, *entry.gpu);
+    }
+    const GpuMesh& gpu =
+        entry.detail ? entry.detail->chooseFor(frame, state.modelMatrix(), *entry.gpu) : *entry.gpu;
     if (own && frame.recording) noteForCache(*frame.recording, *own); // a field, not a child
     // A tessellation that follows the view cannot be replayed from another view (as Coin's
     // sogl_render_* say DONT_AUTO_CACHE for SCREEN_SPACE).
@@ -143,7 +166,7 @@ void renderShape(RenderAction& action, Shape& shape) {
     look.environment = environmentOf(scope.environment);
     if (frame.recording && action.pass() == RenderPass::Opaque) {
         const bool transparent = look.material.transparency > 0.0f || gpu.hasTranslucentColors;
-        frame.recording->shapes.push_back({entry.gpu, texture, look, transparent});
+        frame.recording->shapes.push_back({entry.gpu, texture, look, transparent, entry.detail});
     }
     action.lightsInScope(lights);
     action.clipPlanesInScope(clipPlanes);
