@@ -1,8 +1,9 @@
 // Level of detail for small curved shapes (lib/volsg/render/ShapeDetail.h), against analytic
 // expectations: a sphere, or a cone or cylinder seen along its axis, projects orthographically
 // to a disk of the shape's radius; its coarser tessellation lies within kShapeDetailPixels of
-// that disk's edge, so every pixel centre farther inside covers the shape and every one outside
-// the disk does not. And the level chosen under a perspective view, and its lit image.
+// that disk's edge (and a tenth of its radius), so every pixel centre farther inside covers the
+// shape and every one outside the disk does not. And the level chosen under a perspective view, and
+// its lit image.
 #include <doctest/doctest.h>
 
 #include <volsg/context/OSMesaContext.h>
@@ -95,16 +96,17 @@ struct Disk {
     double radius, cx, cy;
 };
 
-/// Pixel centres that break the disk rule: inside by more than `inset` pixels but not white,
-/// or outside the disk but not black (a small margin for the rasteriser's own rounding).
-int misplaced(const Image& image, const std::vector<Disk>& disks, double inset) {
+/// Pixel centres that break the disk rule: inside by more than inset(radius) pixels but not
+/// white, or outside the disk but not black (a small margin for the rasteriser's own rounding).
+template <class Inset>
+int misplaced(const Image& image, const std::vector<Disk>& disks, Inset inset) {
     int bad = 0;
     for (const Disk& d : disks)
         for (int y = int(d.cy - d.radius) - 2; y <= int(d.cy + d.radius) + 2; ++y)
             for (int x = int(d.cx - d.radius) - 2; x <= int(d.cx + d.radius) + 2; ++x) {
                 const double dist = std::hypot(x + 0.5 - d.cx, y + 0.5 - d.cy);
                 const float v = image.at(x, y).r;
-                if (dist < d.radius - inset - 0.01 && v < 0.99f) ++bad;
+                if (dist < d.radius - inset(d.radius) - 0.01 && v < 0.99f) ++bad;
                 if (dist > d.radius + 0.01 && v > 0.01f) ++bad;
             }
     return bad;
@@ -115,9 +117,10 @@ int misplaced(const Image& image, const std::vector<Disk>& disks, double inset) 
 TEST_CASE("small spheres, cylinders and cones drawn coarser still cover their disks") {
     Offscreen gl;
     // Off the pixel grid by varied fractions, apart from each other.
-    const std::vector<Disk> disks{{1.3, 10.37, 40.29},   {1.9, 25.74, 40.58},   {2.6, 45.11, 40.0},
-                                  {3.7, 70.48, 40.29},   {5.2, 100.85, 40.58},  {8.1, 140.22, 40.0},
-                                  {13.5, 60.59, 140.29}, {31.0, 150.96, 170.58}};
+    const std::vector<Disk> disks{
+        {1.3, 10.37, 40.29},   {1.9, 25.74, 40.58},    {2.6, 45.11, 40.0},
+        {3.7, 70.48, 40.29},   {5.2, 100.85, 40.58},   {8.1, 140.22, 40.0},
+        {13.5, 60.59, 140.29}, {31.0, 150.96, 170.58}, {0.9, 200.43, 40.71}};
     for (Kind kind : {Kind::Sphere, Kind::Cylinder, Kind::Cone}) {
         CAPTURE(int(kind));
         auto root = Separator::create();
@@ -135,12 +138,20 @@ TEST_CASE("small spheres, cylinders and cones drawn coarser still cover their di
         // Small ones are drawn coarser (all up to 5 pixels), the largest never.
         CHECK(coarser >= 5);
         CHECK(coarser < disks.size());
-        // The full tessellation's own distance from the disk bounds both images where it is
-        // larger than the detail's quarter pixel (the 31-pixel shape's full mesh).
-        const int sides = kind == Kind::Sphere ? sphereSlicesFor(0.5f) : roundSlicesFor(0.5f);
-        const double fullInset = 31.0 * (1.0 - std::cos(std::numbers::pi / sides)) + 0.05;
+        // The full tessellation lies within its own deviation of the disk's edge; a coarser
+        // one within a quarter pixel and a tenth of the radius, or the full one's deviation
+        // where that is larger (it is drawn then).
+        const auto fullInset = [&](double r) {
+            return kind == Kind::Sphere
+                       ? sphereMeshDeviation(float(r), sphereSlicesFor(0.5f), sphereStacksFor(0.5f))
+                       : roundMeshDeviation(float(r), roundSlicesFor(0.5f));
+        };
+        const auto coarseInset = [&](double r) {
+            return std::max(fullInset(r),
+                            std::min(kShapeDetailPixels, kCoarsestRelativeDeviation * r));
+        };
         CHECK(misplaced(full, disks, fullInset) == 0);
-        CHECK(misplaced(coarse, disks, std::max(kShapeDetailPixels, fullInset)) == 0);
+        CHECK(misplaced(coarse, disks, coarseInset) == 0);
         // Against the full tessellation: only pixels near the edges differ.
         int differing = 0, edge = 0;
         for (const Disk& d : disks)

@@ -44,4 +44,11 @@ struct CoarserMesh {
     double deviation = 0.0;
 };
 
+/// The coarsest a CoarserMesh may be, as its deviation over the shape's radius. A quarter of a
+/// pixel is a large share of a shape a pixel or two wide: its silhouette, which is most of its
+/// pixels, then moves visibly (with 6 sides, a sphere 1.5 pixels wide loses a sixth of its
+/// area). At a tenth of the radius (a sphere of 10 sides and 5 bands, a cylinder of 8 sides)
+/// the silhouette keeps within a tenth of the shape's size as well.
+constexpr double kCoarsestRelativeDeviation = 0.1;
+
 } // namespace volsg

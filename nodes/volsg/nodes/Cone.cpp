@@ -40,6 +40,7 @@ void Cone::buildCoarserMeshes(const State& state, std::vector<CoarserMesh>& out)
     if (p & SIDES) built.push_back(0);
     if (p & BOTTOM) built.push_back(1);
     for (int s : coarserSliceCounts(slices, 4)) {
+        if (roundMeshDeviation(1.0f, s) > kCoarsestRelativeDeviation) break;
         CoarserMesh& level = out.emplace_back();
         PartStarts starts;
         buildConeMesh(bottomRadius(), height(), (p & SIDES) != 0, (p & BOTTOM) != 0, s, level.mesh,

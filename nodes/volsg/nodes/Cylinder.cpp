@@ -43,6 +43,7 @@ void Cylinder::buildCoarserMeshes(const State& state, std::vector<CoarserMesh>& 
     if (p & TOP) built.push_back(1);
     if (p & BOTTOM) built.push_back(2);
     for (int s : coarserSliceCounts(slices, 4)) {
+        if (roundMeshDeviation(1.0f, s) > kCoarsestRelativeDeviation) break;
         CoarserMesh& level = out.emplace_back();
         PartStarts starts;
         buildCylinderMesh(radius(), height(), (p & SIDES) != 0, (p & TOP) != 0, (p & BOTTOM) != 0,

@@ -33,6 +33,7 @@ void Sphere::buildCoarserMeshes(const State& state, std::vector<CoarserMesh>& ou
     if ((slices + 1) / 2 < stacks) sides.insert(sides.begin(), slices);
     for (int s : sides) {
         const int bands = std::clamp((s + 1) / 2, 2, stacks);
+        if (sphereMeshDeviation(1.0f, s, bands) > kCoarsestRelativeDeviation) break;
         CoarserMesh& level = out.emplace_back();
         buildSphereMesh(radius(), s, bands, level.mesh);
         level.deviation = sphereMeshDeviation(radius(), s, bands);
