@@ -11,6 +11,7 @@
 #include <volsg/gl/GlDebug.h>
 #include <volsg/image/Image.h>
 #include <volsg/nodes/Camera.h>
+#include <volsg/nodes/Complexity.h>
 #include <volsg/nodes/Cone.h>
 #include <volsg/nodes/Cylinder.h>
 #include <volsg/nodes/Light.h>
@@ -257,4 +258,21 @@ TEST_CASE(
     REQUIRE(count > 100);
     CHECK(worst <= 6.0f / 255.0f);
     CHECK(sum / count <= 1.0 / 255.0);
+}
+
+TEST_CASE("shapes under a SCREEN_SPACE Complexity keep the tessellation it fits to the view") {
+    Offscreen gl;
+    auto root = Separator::create();
+    root->addChild(camera());
+    auto complexity = Complexity::create();
+    complexity->type = Complexity::SCREEN_SPACE;
+    root->addChild(complexity);
+    root->addChild(placed(Kind::Sphere, 2.5, 40.3, 40.6));
+    RenderOptions options;
+    options.width = options.height = kSize;
+    gl.renderer.render(*root, options);
+    CHECK(gl.renderer.stats().coarserShapes == 0);
+    complexity->type = Complexity::OBJECT_SPACE;
+    gl.renderer.render(*root, options);
+    CHECK(gl.renderer.stats().coarserShapes == 1);
 }

@@ -9,6 +9,7 @@
 #include <volsg/nodes/Environment.h>
 #include <volsg/nodes/LightModel.h>
 #include <volsg/nodes/Material.h>
+#include <volsg/nodes/PrimitiveComplexity.h>
 #include <volsg/nodes/Shape.h>
 #include <volsg/nodes/ShapeHints.h>
 #include <volsg/nodes/ShapeState.h>
@@ -103,6 +104,8 @@ ShapeTexturing texturingOf(FrameContext& frame, const ShapeState& shape,
 /// The shape's coarser meshes on the GPU (shared by equal content), or null without any.
 std::shared_ptr<const ShapeDetail> detailOf(FrameContext& frame, const Shape& shape,
                                             const State& state, const GpuMesh& full) {
+    // A SCREEN_SPACE complexity fits the tessellation to the view already.
+    if (tessellationFollowsView(state)) return nullptr;
     thread_local std::vector<CoarserMesh> coarser;
     coarser.clear();
     shape.buildCoarserMeshes(state, coarser);
