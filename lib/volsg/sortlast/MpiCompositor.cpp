@@ -1,0 +1,57 @@
+#include <volsg/sortlast/MpiCompositor.h>
+
+#include <chrono>
+#include <stdexcept>
+
+#include <volsg/sortlast/PremultipliedOver.h>
+
+namespace volsg {
+
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+/// MPI's user function: inout = in op inout, where `in` comes from the lower ranks, in front.
+/// The datatype is one pixel (4 floats), so a segment never splits a pixel.
+void overOperator(void* in, void* inout, int* length, MPI_Datatype*) {
+    compositeOver(static_cast<const float*>(in), static_cast<float*>(inout), std::size_t(*length));
+}
+
+} // namespace
+
+std::vector<float> compositeInVisibilityOrder(const std::vector<float>& partial, int position,
+                                              MPI_Comm comm, int root, CompositeTiming* timing) {
+    if (partial.size() % 4 != 0 || partial.size() / 4 > std::size_t(1) << 30)
+        throw std::invalid_argument("sort-last: a partial image is RGBA, at most 2^30 pixels");
+    auto started = std::chrono::steady_clock::now();
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm ordered;
+    MPI_Comm_split(comm, 0, position, &ordered);
+    // Where the root landed in the order.
+    int orderedRank = 0, orderedRoot = 0;
+    MPI_Comm_rank(ordered, &orderedRank);
+    if (rank == root) orderedRoot = orderedRank;
+    MPI_Bcast(&orderedRoot, 1, MPI_INT, root, comm);
+    if (timing) timing->orderMilliseconds = millisecondsSince(started);
+
+    started = std::chrono::steady_clock::now();
+    MPI_Datatype pixel;
+    MPI_Type_contiguous(4, MPI_FLOAT, &pixel);
+    MPI_Type_commit(&pixel);
+    MPI_Op over;
+    MPI_Op_create(&overOperator, 0, &over);
+    std::vector<float> result(rank == root ? partial.size() : 0);
+    MPI_Reduce(partial.data(), rank == root ? result.data() : nullptr, int(partial.size() / 4),
+               pixel, over, orderedRoot, ordered);
+    MPI_Op_free(&over);
+    MPI_Type_free(&pixel);
+    MPI_Comm_free(&ordered);
+    if (timing) timing->reduceMilliseconds = millisecondsSince(started);
+    return result;
+}
+
+} // namespace volsg

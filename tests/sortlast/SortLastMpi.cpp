@@ -1,0 +1,175 @@
+// volsg-render across 1, 2 and 4 MPI processes (mpirun, oversubscribed on one machine) makes
+// the image one process makes, within 1/255 per channel, for views whose brick and part
+// order changes within the image. Built and registered only where MPI is found
+// (tests/CMakeLists.txt); the launcher is VOLSG_MPIEXEC.
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <support/TempDir.h>
+#include <volsg/image/Image.h>
+
+namespace {
+
+struct Run {
+    int status;
+    std::string out, err;
+};
+
+std::string readAll(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+Run run(const volsg::test::TempDir& dir, const std::string& command) {
+    const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
+    const int raw = std::system((command + " >" + out + " 2>" + err).c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readAll(out), readAll(err)};
+}
+
+std::string render() {
+    return std::string(VOLSG_BINARY_DIR) + "/viewer/volsg-render";
+}
+
+/// mpirun with N processes on this machine: more processes than cores, shared memory only
+/// (a container has no network fabric), and as root in CI.
+std::string mpirun(int processes) {
+    return std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+                       "OMPI_MCA_btl=self,vader OMPI_MCA_rmaps_base_oversubscribe=1 ") +
+           VOLSG_MPIEXEC + " --oversubscribe -np " + std::to_string(processes) + " ";
+}
+
+/// A Marschner-Lobb volume (48^3, box about [-1, 1]^3) under `transform`, seen by `camera`,
+/// with `extra` nodes before it (opaque shapes).
+std::string scene(const std::string& camera, const std::string& transform,
+                  const std::string& extra = "") {
+    return "#Inventor V2.1 ascii\nSeparator {\n" + camera + "\n" + extra + "\n  Transform { " +
+           transform +
+           " }\n"
+           "  VolumeData { generator MARSCHNER_LOBB dimensions 48 48 48 }\n"
+           "  TransferFunction { red [ 0 0.9, 1 0.2 ] green [ 0 0.3, 1 0.8 ] blue [ 0 0.1, 1 1 ]\n"
+           "    alpha [ 0 0, 0.3 0.02, 0.6 0.2, 1 0.6 ] }\n"
+           "  Volume { }\n}\n";
+}
+
+float maxDifference(const volsg::Image& a, const volsg::Image& b) {
+    REQUIRE(a.width == b.width);
+    REQUIRE(a.height == b.height);
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::abs(a.pixels[i][c] - b.pixels[i][c]));
+    return worst;
+}
+
+/// Renders `text` in one plain process and with 1, 2 and 4 MPI processes; every MPI image
+/// within 1/255 of the plain one, and the view not empty (a blank image would match too).
+void checkAcrossProcesses(const std::string& name, const std::string& text) {
+    const volsg::test::TempDir dir("volsg-sortlast");
+    const std::string file = dir.file(name + ".iv");
+    std::ofstream(file) << text;
+    const std::string single = dir.file("single.pfm");
+    const Run plain = run(dir, render() + " " + file + " -o " + single + " --size 96x80");
+    REQUIRE_MESSAGE(plain.status == 0, plain.err);
+    const volsg::Image reference = volsg::readPfm(single);
+    float brightest = 0.0f;
+    for (const glm::vec4& p : reference.pixels)
+        brightest = std::max({brightest, p.r, p.g, p.b});
+    CHECK(brightest > 0.2f);
+    for (const int processes : {1, 2, 4}) {
+        const std::string out = dir.file("mpi" + std::to_string(processes) + ".pfm");
+        const Run r =
+            run(dir, mpirun(processes) + render() + " " + file + " -o " + out + " --size 96x80");
+        CAPTURE(name);
+        CAPTURE(processes);
+        REQUIRE_MESSAGE(r.status == 0, r.err);
+        const float difference = maxDifference(volsg::readPfm(out), reference);
+        MESSAGE(name << ", " << processes << " processes: max difference " << difference * 255.0f
+                     << "/255");
+        CHECK(difference <= 1.0f / 255.0f);
+    }
+}
+
+} // namespace
+
+TEST_CASE("sort-last equals one process: orthographic, oblique") {
+    checkAcrossProcesses("ortho", scene("  OrthographicCamera { position 0 0 4 height 2.6 }",
+                                        "rotation 1 1 0.3 0.7"));
+}
+
+TEST_CASE("sort-last equals one process: perspective from outside, oblique") {
+    checkAcrossProcesses("persp", scene("  PerspectiveCamera { position 0 0 4.5 "
+                                        "heightAngle 0.6 nearDistance 1 farDistance 10 }",
+                                        "rotation 0.3 1 0.2 0.9"));
+}
+
+TEST_CASE("sort-last equals one process: the eye within the box's extent along x and y") {
+    // The eye faces the box's front face: the parts' order flips within the image along x and
+    // y (bricks left of the eye are drawn right to left, those right of it left to right).
+    checkAcrossProcesses("beside", scene("  PerspectiveCamera { position 0.15 -0.1 2.2 "
+                                         "heightAngle 1.2 nearDistance 0.5 farDistance 10 }",
+                                         "rotation 0 0 1 0"));
+}
+
+TEST_CASE("sort-last equals one process: the camera inside the volume") {
+    checkAcrossProcesses("inside", scene("  PerspectiveCamera { position 0.2 0.1 0.4 "
+                                         "heightAngle 1.2 nearDistance 0.05 farDistance 10 }",
+                                         "rotation 0 1 0 0.4"));
+}
+
+TEST_CASE("sort-last equals one process: an opaque sphere inside stops the volume") {
+    checkAcrossProcesses("mesh", scene("  PerspectiveCamera { position 0 0 4.5 heightAngle 0.6 "
+                                       "nearDistance 1 farDistance 10 }\n"
+                                       "  DirectionalLight { direction -0.3 -0.4 -1 }",
+                                       "rotation 1 0.2 0 0.5",
+                                       "  Separator { Material { diffuseColor 1 0.8 0.2 } "
+                                       "Sphere { radius 0.45 } }"));
+}
+
+TEST_CASE("sort-last with more processes than bricks: the empty parts add nothing") {
+    // A 2^3 volume is one cell: one brick, so three of the four processes draw nothing.
+    const volsg::test::TempDir dir("volsg-sortlast");
+    const std::string file = dir.file("tiny.iv");
+    std::ofstream(file) << "#Inventor V2.1 ascii\nSeparator {\n"
+                           "  PerspectiveCamera { position 0 0 6 heightAngle 0.6 }\n"
+                           "  Transform { rotation 1 1 0 0.6 }\n"
+                           "  VolumeData { generator SOFT_SPHERE dimensions 2 2 2 }\n"
+                           "  TransferFunction { alpha [ 0 0.3, 1 0.9 ] }\n  Volume { }\n}\n";
+    const Run plain =
+        run(dir, render() + " " + file + " -o " + dir.file("a.pfm") + " --size 64x64");
+    REQUIRE_MESSAGE(plain.status == 0, plain.err);
+    const Run r = run(dir, mpirun(4) + render() + " " + file + " -o " + dir.file("b.pfm") +
+                               " --size 64x64 --mpi-timing");
+    REQUIRE_MESSAGE(r.status == 0, r.err);
+    CHECK(maxDifference(volsg::readPfm(dir.file("a.pfm")), volsg::readPfm(dir.file("b.pfm"))) <=
+          1.0f / 255.0f);
+    // --mpi-timing: one row per process, the three empty ones with no bricks.
+    CHECK(r.out.find("sort-last: 4 processes") != std::string::npos);
+    CHECK(r.out.find("composite (median of 5)") != std::string::npos);
+}
+
+TEST_CASE("sort-last refuses what it cannot split, in one line from one process") {
+    const volsg::test::TempDir dir("volsg-sortlast");
+    const std::string file = dir.file("mip.iv");
+    std::ofstream(file) << "#Inventor V2.1 ascii\nSeparator {\n"
+                           "  VolumeData { generator SOFT_SPHERE dimensions 16 16 16 }\n"
+                           "  TransferFunction { alpha [ 0 0.3, 1 0.9 ] }\n"
+                           "  Volume { renderMode MIP }\n}\n";
+    const Run r = run(dir, mpirun(2) + render() + " " + file + " -o " + dir.file("m.png"));
+    CHECK(r.status != 0);
+    CHECK(r.err.rfind("volsg-render: ", 0) == 0); // the tool's one line comes first
+    CHECK(r.err.find("mip.iv:5:3: Volume: rendering across processes (sort-last) composites "
+                     "DVR only") != std::string::npos);
+    // Said once, by one process.
+    const std::size_t first = r.err.find("composites DVR only");
+    CHECK(r.err.find("composites DVR only", first + 1) == std::string::npos);
+}

@@ -1,0 +1,38 @@
+#pragma once
+// volsg-render across MPI processes (sort-last): each renders its part of the volume, rank 0
+// composites the parts over its opaque image. lib/volsg/sortlast/README.md.
+
+#include <string>
+
+#include <volsg/core/Node.h>
+#include <volsg/image/Image.h>
+#include <volsg/render/Renderer.h>
+
+namespace volsg {
+class MpiSession;
+}
+
+namespace volsg::cli {
+
+/// An error another process reported already: this one exits with failure and says nothing.
+struct ReportedElsewhere {};
+
+struct SortLastReport {
+    bool timing = false;      ///< rank 0 prints each process's times and the compositing times
+    int compositeRepeats = 5; ///< with timing: composites timed this many times (median)
+};
+
+/// Renders `root` across the processes of `mpi`: every process draws the opaque geometry
+/// (whose depth stops its volume part) and its part of the Volume's bricks into a partial
+/// image; the partials are composited in visibility order onto rank 0's opaque image. Returns
+/// the frame on rank 0 (an empty Image elsewhere). Collective. A failure on any process fails
+/// all: the lowest failing rank throws its Error, the others throw ReportedElsewhere.
+Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& options,
+                     const MpiSession& mpi, const SortLastReport& report);
+
+/// Collective: when any process `failed`, the lowest failing rank throws Error(why) and the
+/// others throw ReportedElsewhere, so all exit with one line on stderr and none is left
+/// waiting in a reduction the failed one never joins.
+void agreeOnFailure(const MpiSession& mpi, bool failed, const std::string& why);
+
+} // namespace volsg::cli
