@@ -154,7 +154,7 @@ TEST_CASE("sort-last with more processes than bricks: the empty parts add nothin
           1.0f / 255.0f);
     // --mpi-timing: one row per process, the three empty ones with no bricks.
     CHECK(r.out.find("sort-last: 4 processes") != std::string::npos);
-    CHECK(r.out.find("composite (median of 5)") != std::string::npos);
+    CHECK(r.out.find("composite (median of 15)") != std::string::npos);
 }
 
 TEST_CASE("sort-last refuses what it cannot split, in one line from one process") {

@@ -171,7 +171,10 @@ SlicingStats layoutStats(const VolumeTextures& v, const SlicePlan& plan,
 /// composited across processes (MIP's partial would need its raw extreme values, not colours).
 void partitionVolume(const RayCastVolume& volume, const VolumePartition& partition, SlicePlan& plan,
                      SlicingStats& drawn) {
-    if (partition.parts <= 1) return;
+    if (partition.parts <= 1) {
+        drawn.partLastVoxel = volume.data->dimensions() - 1;
+        return;
+    }
     if (volume.mode != VolumeRenderMode::DVR)
         throw Error("Volume: rendering across processes (sort-last) composites DVR only, not "
                     "MIP, MINIP or AVERAGE");
