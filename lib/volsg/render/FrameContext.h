@@ -118,7 +118,7 @@ struct FrameContext {
     /// Screen-text characters laid out so far in this frame (limits::maxFrameTextGlyphs).
     std::uint64_t textGlyphs = 0;
     /// Which part of the volumes this process draws (sort-last; parts 1: all of them).
-    VolumePartition partition;
+    VolumePartition partition{};
 };
 
 } // namespace volsg

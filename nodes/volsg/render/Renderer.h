@@ -44,7 +44,7 @@ struct RenderOptions {
     /// pass still draws, so its depth stops the volumes; its colour is cleared to (0, 0, 0, 0)
     /// before the Volume pass; no transparent pass. Always the float target.
     bool volumePartial = false;
-    VolumePartition partition;
+    VolumePartition partition{};
 };
 
 /// What a Renderer has done, for tests and the benchmark: a frame where nothing changed
