@@ -79,3 +79,34 @@ TEST_CASE("a region outside the level is one clear error") {
     }
     CHECK_THROWS_AS(readOmeZarrRegion(image, 0, {0, 0, 0}, {0, 1, 1}), Error);
 }
+
+TEST_CASE("the whole level with only a box's chunks read: the box as read whole, fill elsewhere") {
+    const test::TempDir dir("volsg-zarr-region");
+    const std::string image = dir.file("coded.zarr");
+    PyramidOptions options;
+    options.chunk = 8;
+    writeOmeZarrPyramid(*codedGrid({32, 16, 16}), image, options);
+    CHECK(readOmeZarrDimensions(image) == glm::ivec3(32, 16, 16));
+    const ref_ptr<VolumeGrid> whole = readOmeZarr(image);
+    // The spoiled chunk (voxels 24..31, 8..15, 8..15) lies outside the box: never opened.
+    std::ofstream(image + "/0/1/1/3", std::ios::binary | std::ios::trunc) << "not a chunk";
+    const glm::ivec3 first(3, 2, 1), count(18, 9, 12);
+    const ref_ptr<VolumeGrid> part = readOmeZarrWithin(image, 0, first, count);
+    REQUIRE(part->dimensions() == whole->dimensions());
+    CHECK(part->spacing() == whole->spacing());
+    int inside = 0, outside = 0;
+    for (int z = 0; z < 16; ++z)
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 32; ++x) {
+                const glm::ivec3 v(x, y, z);
+                const bool inBox = glm::all(glm::greaterThanEqual(v, first)) &&
+                                   glm::all(glm::lessThan(v, first + count));
+                const double value = part->value(x, y, z);
+                if (inBox && value != whole->value(x, y, z)) ++inside;
+                // Outside the box: the chunk's value where a chunk meeting it was read, else 0.
+                if (!inBox && value != 0.0 && value != whole->value(x, y, z)) ++outside;
+            }
+    CHECK(inside == 0);
+    CHECK(outside == 0);
+    CHECK(part->value(31, 15, 15) == 0.0); // in a chunk the box does not meet
+}

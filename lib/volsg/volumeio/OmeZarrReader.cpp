@@ -382,44 +382,58 @@ ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level, std::uint64_
     return grid;
 }
 
-ref_ptr<VolumeGrid> readOmeZarrRegion(const std::string& path, int level, glm::ivec3 first,
-                                      glm::ivec3 count, std::uint64_t byteLimit) {
+namespace {
+
+/// One level's array, opened for reading parts of it.
+struct OpenLevel {
+    OmeZarrLevel where;
+    std::string zarrayPath;
+    ZarrArrayLayout layout;
+    glm::ivec3 dims{0};
+};
+
+OpenLevel openLevel(const std::string& path, int level, std::uint64_t byteLimit) {
     std::error_code ec;
     if (!fs::is_directory(path, ec))
         throw Error(std::string("cannot open OME-Zarr image: ") +
                         (fs::exists(path, ec) ? "not a folder" : "no such folder"),
                     path);
-    const OmeZarrLevel where = findLevelChecked(fs::path(path).lexically_normal(), level);
-    const std::string zarrayPath = (fs::path(where.arrayFolder) / ".zarray").string();
-    const ZarrArrayLayout layout = readZarrArrayLayout(where.arrayFolder, byteLimit);
-    const std::size_t rank = layout.shape.size();
-    const glm::ivec3 dims(int(layout.shape[rank - 1]), int(layout.shape[rank - 2]),
-                          int(layout.shape[rank - 3]));
+    OpenLevel open;
+    open.where = findLevelChecked(fs::path(path).lexically_normal(), level);
+    open.zarrayPath = (fs::path(open.where.arrayFolder) / ".zarray").string();
+    open.layout = readZarrArrayLayout(open.where.arrayFolder, byteLimit);
+    const std::size_t rank = open.layout.shape.size();
+    open.dims = glm::ivec3(int(open.layout.shape[rank - 1]), int(open.layout.shape[rank - 2]),
+                           int(open.layout.shape[rank - 3]));
+    return open;
+}
+
+void checkRegion(const OpenLevel& open, glm::ivec3 first, glm::ivec3 count) {
     const glm::ivec3 end = first + count;
     if (glm::any(glm::lessThan(first, glm::ivec3(0))) ||
-        glm::any(glm::lessThan(count, glm::ivec3(1))) || glm::any(glm::greaterThan(end, dims)))
+        glm::any(glm::lessThan(count, glm::ivec3(1))) || glm::any(glm::greaterThan(end, open.dims)))
         throw Error("the region from voxel (" + std::to_string(first.x) + ", " +
                         std::to_string(first.y) + ", " + std::to_string(first.z) + ") of " +
                         std::to_string(count.x) + " x " + std::to_string(count.y) + " x " +
                         std::to_string(count.z) + " voxels is not inside the level's " +
-                        std::to_string(dims.x) + " x " + std::to_string(dims.y) + " x " +
-                        std::to_string(dims.z),
-                    zarrayPath);
-    checkedGridBytes(zarrayPath, 0, count, layout.type, where.spacing, byteLimit);
+                        std::to_string(open.dims.x) + " x " + std::to_string(open.dims.y) + " x " +
+                        std::to_string(open.dims.z),
+                    open.zarrayPath);
+}
 
-    ref_ptr<VolumeGrid> grid;
-    try {
-        grid = VolumeGrid::create(count, layout.type, where.spacing, byteLimit);
-    } catch (const Error& e) {
-        throw Error(e.message(), zarrayPath);
-    }
-    const std::span<std::byte> out = grid->bytes();
+/// Copies the voxels first .. first + count of the level into `grid`, voxel v of the level at
+/// grid voxel v - origin, reading only the chunks that meet the box.
+void readChunksOfRegion(const OpenLevel& open, glm::ivec3 first, glm::ivec3 count, VolumeGrid& grid,
+                        glm::ivec3 origin) {
+    const ZarrArrayLayout& layout = open.layout;
+    const std::size_t rank = layout.shape.size();
+    const std::span<std::byte> out = grid.bytes();
     const std::size_t size = voxelTypeSize(layout.type);
     const glm::ivec3 chunk(int(layout.chunks[rank - 1]), int(layout.chunks[rank - 2]),
                            int(layout.chunks[rank - 3]));
-    ChunkLoader loader(zarrayPath, layout);
+    const glm::ivec3 end = first + count;
+    ChunkLoader loader(open.zarrayPath, layout);
     std::vector<std::uint64_t> index(rank, 0);
-    // Only the chunks that meet the region are opened.
     const glm::ivec3 firstChunk = first / chunk, lastChunk = (end - 1) / chunk;
     for (int cz = firstChunk.z; cz <= lastChunk.z; ++cz)
         for (int cy = firstChunk.y; cy <= lastChunk.y; ++cy)
@@ -440,11 +454,51 @@ ref_ptr<VolumeGrid> readOmeZarrRegion(const std::string& path, int level, glm::i
                                  std::size_t(chunk.x) +
                              std::size_t(from.x - chunkFirst.x)) *
                             size;
-                        const glm::ivec3 at = glm::ivec3(from.x, y, z) - first;
-                        std::memcpy(out.data() + grid->index(at.x, at.y, at.z) * size,
+                        const glm::ivec3 at = glm::ivec3(from.x, y, z) - origin;
+                        std::memcpy(out.data() + grid.index(at.x, at.y, at.z) * size,
                                     voxels.data() + in, row);
                     }
             }
+}
+
+} // namespace
+
+ref_ptr<VolumeGrid> readOmeZarrRegion(const std::string& path, int level, glm::ivec3 first,
+                                      glm::ivec3 count, std::uint64_t byteLimit) {
+    const OpenLevel open = openLevel(path, level, byteLimit);
+    checkRegion(open, first, count);
+    checkedGridBytes(open.zarrayPath, 0, count, open.layout.type, open.where.spacing, byteLimit);
+    ref_ptr<VolumeGrid> grid;
+    try {
+        grid = VolumeGrid::create(count, open.layout.type, open.where.spacing, byteLimit);
+    } catch (const Error& e) {
+        throw Error(e.message(), open.zarrayPath);
+    }
+    readChunksOfRegion(open, first, count, *grid, first);
+    return grid;
+}
+
+glm::ivec3 readOmeZarrDimensions(const std::string& path, int level) {
+    return openLevel(path, level, VolumeGrid::defaultByteLimit).dims;
+}
+
+ref_ptr<VolumeGrid> readOmeZarrWithin(const std::string& path, int level, glm::ivec3 first,
+                                      glm::ivec3 count, std::uint64_t byteLimit) {
+    const OpenLevel open = openLevel(path, level, byteLimit);
+    checkRegion(open, first, count);
+    checkedGridBytes(open.zarrayPath, 0, open.dims, open.layout.type, open.where.spacing,
+                     byteLimit);
+    ref_ptr<VolumeGrid> grid;
+    try {
+        grid = VolumeGrid::create(open.dims, open.layout.type, open.where.spacing, byteLimit);
+    } catch (const Error& e) {
+        throw Error(e.message(), open.zarrayPath);
+    }
+    grid->setGeometry(open.where.geometry);
+    if (open.layout.fillValue != 0.0) // a new grid holds zeros
+        for (std::size_t i = 0; i < grid->voxelCount(); ++i)
+            grid->setValue(i, open.layout.fillValue);
+    readChunksOfRegion(open, first, count, *grid, glm::ivec3(0));
     return grid;
 }
 
