@@ -152,6 +152,7 @@ int run(volsg::cli::Arguments& args) {
         sortLastStarted = true;
         volsg::cli::SortLastReport report;
         report.timing = mpiTiming;
+        report.sceneFile = scene;
         const volsg::Image image =
             volsg::cli::renderSortLast(renderer, *root, options, *mpiSession, report);
         if (mpiSession->rank() != 0) return 0;

@@ -1,4 +1,5 @@
 #include "SortLastRender.h"
+#include "OwnPartLoading.h"
 
 #include <algorithm>
 #include <chrono>
@@ -32,7 +33,21 @@ struct RankTimes {
     double partialMilliseconds = 0.0; ///< the partial image, read back
     double voxels = 0.0;              ///< voxels its part spans
     double position = 0.0;            ///< its place front to back
+    double readMilliseconds = 0.0;    ///< reading its own part (0: the scene read it all)
+    double voxelsRead = 0.0;          ///< voxels of its own part and ghost read
 };
+
+/// The whole volume's natural range from the parts' own (VolumeGrid::naturalRange: 16-bit data
+/// spanning no range takes its type's).
+glm::dvec2 agreedRange(const OwnPartLoad& load) {
+    double lo = load.ownRange.x, hi = load.ownRange.y;
+    MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    if (load.type == VoxelType::Float) return lo <= hi ? glm::dvec2(lo, hi) : glm::dvec2(0.0);
+    if (lo < hi) return {lo, hi};
+    return load.type == VoxelType::UShort ? glm::dvec2(0.0, 65535.0)
+                                          : glm::dvec2(-32768.0, 32767.0);
+}
 
 /// The one Volume a sort-last render splits; null when the scene has none (the partials are
 /// then empty and rank 0's opaque image is the frame). Throws Error for what it cannot split.
@@ -58,14 +73,20 @@ double median(std::vector<double> values) {
 }
 
 void printTiming(const std::vector<RankTimes>& ranks, const std::vector<CompositeTiming>& runs,
-                 double finalOverMilliseconds, const Image& frame) {
+                 double finalOverMilliseconds, const Image& frame, const OwnPartLoad& load) {
     std::printf("sort-last: %d processes, %d x %d pixels (%.1f MB of RGBA float per partial)\n",
                 int(ranks.size()), frame.width, frame.height,
                 16.0 * double(frame.width) * double(frame.height) / 1e6);
-    std::printf("  rank  position  voxels  partial ms  opaque ms\n");
+    if (load.loaded)
+        std::printf("  each process read only its part and %d ghost voxels (OME-Zarr chunks)\n",
+                    kOwnPartGhost);
+    else if (ranks.size() > 1)
+        std::printf("  every process read the whole volume: %s\n", load.whyNot.c_str());
+    std::printf("  rank  position  voxels  read voxels  read ms  partial ms  opaque ms\n");
     for (std::size_t r = 0; r < ranks.size(); ++r)
-        std::printf("  %4zu  %8d  %6.3gM  %10.1f  %9.1f\n", r, int(ranks[r].position),
-                    ranks[r].voxels / 1e6, ranks[r].partialMilliseconds,
+        std::printf("  %4zu  %8d  %6.3gM  %10.3gM  %7.1f  %10.1f  %9.1f\n", r,
+                    int(ranks[r].position), ranks[r].voxels / 1e6, ranks[r].voxelsRead / 1e6,
+                    ranks[r].readMilliseconds, ranks[r].partialMilliseconds,
                     ranks[r].opaqueMilliseconds);
     std::vector<double> order, reduce, total;
     for (const CompositeTiming& t : runs) {
@@ -95,8 +116,22 @@ Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& option
     RankTimes mine;
     Image opaque, partial;
     std::string why;
+    Volume* volume = nullptr;
+    OwnPartLoad load;
     try {
-        Volume* volume = splitVolumeOf(root, size);
+        volume = splitVolumeOf(root, size);
+        if (volume && size > 1)
+            load = loadOwnPart(root, *volume, report.sceneFile, options.interactive, rank, size);
+    } catch (const std::exception& e) {
+        why = e.what();
+    }
+    agreeOnFailure(mpi, !why.empty(), why);
+    mine.readMilliseconds = load.milliseconds;
+    mine.voxelsRead = load.voxelsRead;
+    // Every process loaded its part, or none did (the same scene and options decide it).
+    if (load.loaded && load.needsRange) useDataRange(root, agreedRange(load));
+
+    try {
         if (rank == 0) {
             // The background and the opaque shapes: what the volume parts composite onto.
             RenderOptions opaqueOptions = options;
@@ -125,7 +160,8 @@ Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& option
     // The positions are a permutation of the ranks when every process drew its part of the
     // Volume; when none drew it (under a Switch, say) every partial is empty and any order is.
     std::vector<RankTimes> all(static_cast<std::size_t>(size));
-    MPI_Allgather(&mine, 4, MPI_DOUBLE, all.data(), 4, MPI_DOUBLE, MPI_COMM_WORLD);
+    constexpr int kTimes = int(sizeof(RankTimes) / sizeof(double));
+    MPI_Allgather(&mine, kTimes, MPI_DOUBLE, all.data(), kTimes, MPI_DOUBLE, MPI_COMM_WORLD);
     std::vector<char> seen(static_cast<std::size_t>(size), 0);
     bool permutation = true;
     for (const RankTimes& t : all) {
@@ -152,7 +188,7 @@ Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& option
     const auto started = Clock::now();
     compositeOver(volumePart.data(), &opaque.pixels.data()->x, opaque.pixels.size());
     const double finalOver = millisecondsSince(started);
-    if (report.timing) printTiming(all, runs, finalOver, opaque);
+    if (report.timing) printTiming(all, runs, finalOver, opaque, load);
     return opaque;
 }
 

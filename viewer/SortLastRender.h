@@ -18,7 +18,8 @@ namespace volsg::cli {
 struct ReportedElsewhere {};
 
 struct SortLastReport {
-    bool timing = false; ///< rank 0 prints each process's times and the compositing times
+    std::string sceneFile; ///< where the scene's relative file names resolve
+    bool timing = false;   ///< rank 0 prints each process's times and the compositing times
     /// With timing: composites timed this many times (median and fastest: on a loaded machine
     /// the fastest is the cost, the median what a frame may see).
     int compositeRepeats = 15;

@@ -15,6 +15,8 @@
 
 #include <support/TempDir.h>
 #include <volsg/image/Image.h>
+#include <volsg/volume/VolumeGrid.h>
+#include <volsg/volumeio/OmeZarrPyramid.h>
 
 namespace {
 
@@ -76,8 +78,13 @@ float maxDifference(const volsg::Image& a, const volsg::Image& b) {
 
 /// Renders `text` in one plain process and with 1, 2 and 4 MPI processes; every MPI image
 /// within 1/255 of the plain one, and the view not empty (a blank image would match too).
-void checkAcrossProcesses(const std::string& name, const std::string& text) {
+/// `prepare` writes what the scene reads into the folder; `timingSays`, when given, is what
+/// --mpi-timing must print with 4 processes.
+void checkAcrossProcesses(const std::string& name, const std::string& text,
+                          void (*prepare)(const volsg::test::TempDir&) = nullptr,
+                          const std::string& timingSays = "") {
     const volsg::test::TempDir dir("volsg-sortlast");
+    if (prepare) prepare(dir);
     const std::string file = dir.file(name + ".iv");
     std::ofstream(file) << text;
     const std::string single = dir.file("single.pfm");
@@ -91,7 +98,10 @@ void checkAcrossProcesses(const std::string& name, const std::string& text) {
     for (const int processes : {1, 2, 4}) {
         const std::string out = dir.file("mpi" + std::to_string(processes) + ".pfm");
         const Run r = run(dir, mpirun(dir, processes) + render() + " " + file + " -o " + out +
-                                   " --size 96x80");
+                                   " --size 96x80 --mpi-timing");
+        if (processes == 4 && !timingSays.empty())
+            CHECK(r.out.find(timingSays) != std::string::npos);
+
         CAPTURE(name);
         CAPTURE(processes);
         REQUIRE_MESSAGE(r.status == 0, r.err);
@@ -136,6 +146,54 @@ TEST_CASE("sort-last equals one process: an opaque sphere inside stops the volum
                                        "rotation 1 0.2 0 0.5",
                                        "  Separator { Material { diffuseColor 1 0.8 0.2 } "
                                        "Sphere { radius 0.45 } }"));
+}
+
+namespace {
+
+/// A 16-bit volume (values 3000 .. 23000: its natural range is not the type's) as an
+/// OME-Zarr image of 8^3 chunks, ml.zarr in the test's folder.
+void writeSixteenBitImage(const volsg::test::TempDir& dir) {
+    const glm::ivec3 dims(40, 36, 32);
+    auto grid = volsg::VolumeGrid::create(dims, volsg::VoxelType::UShort, glm::dvec3(0.05));
+    for (int z = 0; z < dims.z; ++z)
+        for (int y = 0; y < dims.y; ++y)
+            for (int x = 0; x < dims.x; ++x) {
+                const glm::dvec3 p = (glm::dvec3(x, y, z) + 0.5) / glm::dvec3(dims) - 0.5;
+                const double shell = std::exp(-std::pow((glm::length(p) - 0.3) * 12.0, 2.0));
+                const double ripple = 0.5 + 0.5 * std::sin(20.0 * p.x) * std::cos(17.0 * p.y);
+                grid->setValue(x, y, z, 3000.0 + 20000.0 * shell * ripple);
+            }
+    volsg::PyramidOptions options;
+    options.chunk = 8;
+    volsg::writeOmeZarrPyramid(*grid, dir.file("ml.zarr"), options);
+}
+
+std::string zarrScene(const std::string& volumeFields) {
+    return "#Inventor V2.1 ascii\nSeparator {\n"
+           "  PerspectiveCamera { position 0.3 0.2 3 heightAngle 0.7 nearDistance 0.5 "
+           "farDistance 10 }\n"
+           "  Transform { rotation 1 1 0 0.5 }\n"
+           "  VolumeData { fileName \"ml.zarr\" }\n"
+           "  TransferFunction { red [ 0 0.2, 1 1 ] green [ 0 0.8, 1 0.4 ] blue [ 0 1, 1 0.1 ]\n"
+           "    alpha [ 0 0, 0.2 0.05, 1 0.8 ] }\n"
+           "  Volume { " +
+           volumeFields + " }\n}\n";
+}
+
+} // namespace
+
+TEST_CASE("sort-last equals one process when each process reads only its own chunks") {
+    // Fixed plane rules (errorTarget 0): the fragments sample at most kOwnPartGhost voxels
+    // beyond their part, so each process reads its part and ghost of the OME-Zarr image, and
+    // the processes agree on the data's range (16-bit: its own min and max).
+    checkAcrossProcesses("own-chunks", zarrScene("errorTarget 0"), writeSixteenBitImage,
+                         "each process read only its part and 3 ghost voxels");
+}
+
+TEST_CASE("sort-last with an error target reads the whole volume everywhere, and says why") {
+    checkAcrossProcesses("zarr-target", zarrScene(""), writeSixteenBitImage,
+                         "every process read the whole volume: the Volume chooses its planes "
+                         "from errorTarget");
 }
 
 TEST_CASE("sort-last with more processes than the volume has cells: the empty parts add nothing") {
