@@ -29,10 +29,12 @@ struct OwnPartLoad {
     VoxelType type = VoxelType::UByte;
 };
 
-/// Voxels beyond its box a part's fragments sample under the fixed plane rules: one for
-/// trilinear interpolation, one for lighting's central differences, one for half a slab of a
-/// ray within 75 degrees of the view axis (2 planes a voxel).
-constexpr int kOwnPartGhost = 3;
+/// Voxels beyond its box a part's fragments sample under the fixed plane rules (2 planes a
+/// voxel, one sample each): one for trilinear interpolation, one for lighting's central
+/// differences, and two for the ray's stretch a fragment stands for (half a slab; a box
+/// face's sliver, under one plane spacing: 0.5 L0 / cos, under 2 voxels for rays within 75
+/// degrees of the view axis).
+constexpr int kOwnPartGhost = 4;
 
 /// When the scene's one VolumeData reads an OME-Zarr image (no labels) and `volume` draws under its
 /// fixed plane rules (errorTarget 0, numPlanes 0, samplesPerPlane 1, not interactive), reads part

@@ -187,7 +187,7 @@ TEST_CASE("sort-last equals one process when each process reads only its own chu
     // beyond their part, so each process reads its part and ghost of the OME-Zarr image, and
     // the processes agree on the data's range (16-bit: its own min and max).
     checkAcrossProcesses("own-chunks", zarrScene("errorTarget 0"), writeSixteenBitImage,
-                         "each process read only its part and 3 ghost voxels");
+                         "each process read only its part and 4 ghost voxels");
 }
 
 TEST_CASE("sort-last with an error target reads the whole volume everywhere, and says why") {
