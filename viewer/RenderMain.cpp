@@ -49,11 +49,13 @@ const char* usage =
     "                against the rendering model (Volume.errorTarget)\n"
     "Across processes (sort-last, lib/volsg/sortlast/README.md), started by mpirun:\n"
     "  mpirun -np N volsg-render FILE -o OUT.png [--mpi-timing]\n"
-    "                each process draws its part of the Volume node (a k-d split of its bricks;\n"
+    "                each process draws its part of the Volume node (a k-d split of its box;\n"
     "                DVR only, one Volume, no transparent shapes) and rank 0 composites the parts\n"
-    "                in visibility order over its opaque image and writes OUT; without mpirun\n"
-    "                one process draws everything (no MPI start-up)\n"
-    "  --mpi-timing  rank 0 prints each process's render time and the compositing time\n"
+    "                in visibility order over its opaque image and writes OUT; from an OME-Zarr\n"
+    "                volume with errorTarget 0 each process reads only its own chunks; without\n"
+    "                mpirun one process draws everything (no MPI start-up)\n"
+    "  --mpi-timing  rank 0 prints each process's read and render times and the compositing\n"
+    "                time\n"
     "%s";
 
 double parseTime(const std::string& text) {
