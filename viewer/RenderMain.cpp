@@ -56,6 +56,9 @@ const char* usage =
     "                mpirun one process draws everything (no MPI start-up)\n"
     "  --mpi-timing  rank 0 prints each process's read and render times and the compositing\n"
     "                time\n"
+    "  --mpi-composite reduce|reduce-scatter  how the parts combine: MPI_Reduce to rank 0\n"
+    "                (default), or MPI_Reduce_scatter_block then MPI_Gather (each process\n"
+    "                composites 1/N of the image)\n"
     "%s";
 
 double parseTime(const std::string& text) {
@@ -92,6 +95,7 @@ int run(volsg::cli::Arguments& args) {
     stereo.mode = volsg::StereoMode::Off;
     double time = 0.0;
     bool mpiTiming = false;
+    std::string mpiComposite = "reduce";
     volsg::cli::Options table;
     table.text({"-o", "--output"}, output)
         .size("--size", options.width, options.height)
@@ -101,6 +105,7 @@ int run(volsg::cli::Arguments& args) {
         .flag("--interactive", options.interactive)
         .flag("--verbose", verbose)
         .flag("--mpi-timing", mpiTiming)
+        .value("--mpi-composite", [&](const std::string& v) { mpiComposite = v; })
         .value("--tolerance",
                [&](const std::string& v) { rayOptions.tolerance = parseTolerance(v); })
         .value("--time", [&](const std::string& v) { time = parseTime(v); })
@@ -154,6 +159,11 @@ int run(volsg::cli::Arguments& args) {
         sortLastStarted = true;
         volsg::cli::SortLastReport report;
         report.timing = mpiTiming;
+        if (mpiComposite == "reduce-scatter")
+            report.method = volsg::CompositeMethod::ReduceScatter;
+        else if (mpiComposite != "reduce")
+            throw volsg::Error("--mpi-composite wants reduce or reduce-scatter, got '" +
+                               mpiComposite + "'");
         report.sceneFile = scene;
         const volsg::Image image =
             volsg::cli::renderSortLast(renderer, *root, options, *mpiSession, report);
@@ -165,7 +175,8 @@ int run(volsg::cli::Arguments& args) {
         return 0;
     }
 #endif
-    if (mpiTiming) throw volsg::Error("--mpi-timing times a run under mpirun");
+    if (mpiTiming || mpiComposite != "reduce")
+        throw volsg::Error("--mpi-timing and --mpi-composite apply to a run under mpirun");
     const volsg::Image image = volsg::renderStereo(renderer, *root, options, stereo);
     progress.stage(0.95, "writing " + output);
     volsg::writeImage(output, image);

@@ -73,7 +73,8 @@ double median(std::vector<double> values) {
 }
 
 void printTiming(const std::vector<RankTimes>& ranks, const std::vector<CompositeTiming>& runs,
-                 double finalOverMilliseconds, const Image& frame, const OwnPartLoad& load) {
+                 double finalOverMilliseconds, const Image& frame, const OwnPartLoad& load,
+                 CompositeMethod method) {
     std::printf("sort-last: %d processes, %d x %d pixels (%.1f MB of RGBA float per partial)\n",
                 int(ranks.size()), frame.width, frame.height,
                 16.0 * double(frame.width) * double(frame.height) / 1e6);
@@ -94,8 +95,9 @@ void printTiming(const std::vector<RankTimes>& ranks, const std::vector<Composit
         reduce.push_back(t.reduceMilliseconds);
         total.push_back(t.orderMilliseconds + t.reduceMilliseconds);
     }
-    std::printf("  composite (median of %zu): order %.2f ms, reduce %.2f ms, total %.2f ms "
+    std::printf("  composite by %s (median of %zu): order %.2f ms, reduce %.2f ms, total %.2f ms "
                 "(fastest %.2f ms); over the opaque image %.2f ms\n",
+                method == CompositeMethod::Reduce ? "reduce" : "reduce-scatter and gather",
                 runs.size(), median(order), median(reduce), median(total),
                 *std::min_element(total.begin(), total.end()), finalOverMilliseconds);
 }
@@ -177,18 +179,19 @@ Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& option
     // imbalance) is not compositing.
     if (report.timing) MPI_Barrier(MPI_COMM_WORLD);
     std::vector<float> volumePart =
-        compositeInVisibilityOrder(pixels, position, MPI_COMM_WORLD, 0, &runs[0]);
+        compositeInVisibilityOrder(pixels, position, MPI_COMM_WORLD, 0, &runs[0], report.method);
     for (int k = 1; report.timing && k < report.compositeRepeats; ++k) {
         runs.emplace_back();
         MPI_Barrier(MPI_COMM_WORLD);
-        compositeInVisibilityOrder(pixels, position, MPI_COMM_WORLD, 0, &runs.back());
+        compositeInVisibilityOrder(pixels, position, MPI_COMM_WORLD, 0, &runs.back(),
+                                   report.method);
     }
     if (rank != 0) return Image();
 
     const auto started = Clock::now();
     compositeOver(volumePart.data(), &opaque.pixels.data()->x, opaque.pixels.size());
     const double finalOver = millisecondsSince(started);
-    if (report.timing) printTiming(all, runs, finalOver, opaque, load);
+    if (report.timing) printTiming(all, runs, finalOver, opaque, load, report.method);
     return opaque;
 }
 

@@ -7,6 +7,7 @@
 #include <volsg/core/Node.h>
 #include <volsg/image/Image.h>
 #include <volsg/render/Renderer.h>
+#include <volsg/sortlast/MpiCompositor.h>
 
 namespace volsg {
 class MpiSession;
@@ -18,6 +19,7 @@ namespace volsg::cli {
 struct ReportedElsewhere {};
 
 struct SortLastReport {
+    CompositeMethod method = CompositeMethod::Reduce;
     std::string sceneFile; ///< where the scene's relative file names resolve
     bool timing = false;   ///< rank 0 prints each process's times and the compositing times
     /// With timing: composites timed this many times (median and fastest: on a loaded machine

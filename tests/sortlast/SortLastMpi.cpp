@@ -82,13 +82,13 @@ float maxDifference(const volsg::Image& a, const volsg::Image& b) {
 /// --mpi-timing must print with 4 processes.
 void checkAcrossProcesses(const std::string& name, const std::string& text,
                           void (*prepare)(const volsg::test::TempDir&) = nullptr,
-                          const std::string& timingSays = "") {
+                          const std::string& timingSays = "", const std::string& options = "") {
     const volsg::test::TempDir dir("volsg-sortlast");
     if (prepare) prepare(dir);
     const std::string file = dir.file(name + ".iv");
     std::ofstream(file) << text;
     const std::string single = dir.file("single.pfm");
-    const Run plain = run(dir, render() + " " + file + " -o " + single + " --size 96x80");
+    const Run plain = run(dir, render() + " " + file + " -o " + single + " --size 97x81");
     REQUIRE_MESSAGE(plain.status == 0, plain.err);
     const volsg::Image reference = volsg::readPfm(single);
     float brightest = 0.0f;
@@ -98,7 +98,7 @@ void checkAcrossProcesses(const std::string& name, const std::string& text,
     for (const int processes : {1, 2, 4}) {
         const std::string out = dir.file("mpi" + std::to_string(processes) + ".pfm");
         const Run r = run(dir, mpirun(dir, processes) + render() + " " + file + " -o " + out +
-                                   " --size 96x80 --mpi-timing");
+                                   " --size 97x81 --mpi-timing " + options);
         if (processes == 4 && !timingSays.empty())
             CHECK(r.out.find(timingSays) != std::string::npos);
 
@@ -123,6 +123,16 @@ TEST_CASE("sort-last equals one process: perspective from outside, oblique") {
     checkAcrossProcesses("persp", scene("  PerspectiveCamera { position 0 0 4.5 "
                                         "heightAngle 0.6 nearDistance 1 farDistance 10 }",
                                         "rotation 0.3 1 0.2 0.9"));
+}
+
+TEST_CASE("sort-last equals one process: composited by reduce-scatter and gather") {
+    // 97 x 81 pixels split into no whole number of blocks: the last is padded.
+    checkAcrossProcesses("scatter",
+                         scene("  PerspectiveCamera { position 0 0 4.5 heightAngle 0.6 "
+                               "nearDistance 1 farDistance 10 }",
+                               "rotation 0.3 1 0.2 0.9"),
+                         nullptr, "composite by reduce-scatter and gather",
+                         "--mpi-composite reduce-scatter");
 }
 
 TEST_CASE("sort-last equals one process: the eye within the box's extent along x and y") {
@@ -215,7 +225,7 @@ TEST_CASE("sort-last with more processes than the volume has cells: the empty pa
           1.0f / 255.0f);
     // --mpi-timing: one row per process, the three empty ones with no bricks.
     CHECK(r.out.find("sort-last: 4 processes") != std::string::npos);
-    CHECK(r.out.find("composite (median of 15)") != std::string::npos);
+    CHECK(r.out.find("composite by reduce (median of 15)") != std::string::npos);
 }
 
 TEST_CASE("sort-last refuses what it cannot split, in one line from one process") {

@@ -1,5 +1,6 @@
 #include <volsg/sortlast/MpiCompositor.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -23,7 +24,8 @@ void overOperator(void* in, void* inout, int* length, MPI_Datatype*) {
 } // namespace
 
 std::vector<float> compositeInVisibilityOrder(const std::vector<float>& partial, int position,
-                                              MPI_Comm comm, int root, CompositeTiming* timing) {
+                                              MPI_Comm comm, int root, CompositeTiming* timing,
+                                              CompositeMethod method) {
     if (partial.size() % 4 != 0 || partial.size() / 4 > std::size_t(1) << 30)
         throw std::invalid_argument("sort-last: a partial image is RGBA, at most 2^30 pixels");
     auto started = std::chrono::steady_clock::now();
@@ -45,8 +47,31 @@ std::vector<float> compositeInVisibilityOrder(const std::vector<float>& partial,
     MPI_Op over;
     MPI_Op_create(&overOperator, 0, &over);
     std::vector<float> result(rank == root ? partial.size() : 0);
-    MPI_Reduce(partial.data(), rank == root ? result.data() : nullptr, int(partial.size() / 4),
-               pixel, over, orderedRoot, ordered);
+    const std::size_t pixels = partial.size() / 4;
+    if (method == CompositeMethod::Reduce) {
+        MPI_Reduce(partial.data(), rank == root ? result.data() : nullptr, int(pixels), pixel, over,
+                   orderedRoot, ordered);
+    } else {
+        // Block k of the image goes to ordered rank k, which the gather puts back at k; the
+        // image is padded with transparent pixels to whole blocks.
+        int size = 1;
+        MPI_Comm_size(ordered, &size);
+        const std::size_t block = (pixels + std::size_t(size) - 1) / std::size_t(size);
+        const std::size_t padded = block * std::size_t(size);
+        std::vector<float> padding;
+        const float* send = partial.data();
+        if (padded != pixels) {
+            padding.assign(4 * padded, 0.0f);
+            std::copy(partial.begin(), partial.end(), padding.begin());
+            send = padding.data();
+        }
+        std::vector<float> mine(4 * block), gathered(rank == root ? 4 * padded : 0);
+        MPI_Reduce_scatter_block(send, mine.data(), int(block), pixel, over, ordered);
+        MPI_Gather(mine.data(), int(block), pixel, rank == root ? gathered.data() : nullptr,
+                   int(block), pixel, orderedRoot, ordered);
+        if (rank == root)
+            std::copy(gathered.begin(), gathered.begin() + 4 * pixels, result.begin());
+    }
     MPI_Op_free(&over);
     MPI_Type_free(&pixel);
     MPI_Comm_free(&ordered);

@@ -8,10 +8,19 @@
 
 namespace volsg {
 
+/// How the partials are combined (lib/volsg/sortlast/README.md, the cost model).
+enum class CompositeMethod {
+    /// MPI_Reduce to the root: MPI's tree, each round moving and compositing whole images.
+    Reduce,
+    /// MPI_Reduce_scatter_block then MPI_Gather: each process composites 1/p of the image
+    /// (binary swap / radix-k inside MPI), the root gathers the composited blocks.
+    ReduceScatter,
+};
+
 /// Times of one composite, milliseconds on a steady clock.
 struct CompositeTiming {
     double orderMilliseconds = 0.0;  ///< the communicator ordered by depth (MPI_Comm_split)
-    double reduceMilliseconds = 0.0; ///< the reduction (MPI_Reduce with "over")
+    double reduceMilliseconds = 0.0; ///< the reduction with "over" (and the gather)
 };
 
 /// Combines the premultiplied RGBA float images `partial` (width * height * 4 floats, the
@@ -23,6 +32,7 @@ struct CompositeTiming {
 /// (a rank of `comm`); elsewhere it is empty. Collective: every process of `comm` calls it.
 std::vector<float> compositeInVisibilityOrder(const std::vector<float>& partial, int position,
                                               MPI_Comm comm, int root,
-                                              CompositeTiming* timing = nullptr);
+                                              CompositeTiming* timing = nullptr,
+                                              CompositeMethod method = CompositeMethod::Reduce);
 
 } // namespace volsg
