@@ -43,11 +43,13 @@ std::string render() {
 }
 
 /// mpirun with N processes on this machine: more processes than cores, shared memory only
-/// (a container has no network fabric), as root in CI, without LeakSanitizer in the
+/// (a container has no network fabric; no single-copy transfers, which need ptrace rights a
+/// container may not grant), as root in CI, without LeakSanitizer in the
 /// processes it starts (under ASan: OpenMPI leaks at exit), and its session files in the
 /// test's own folder (two mpiruns started at once raced to create /tmp/ompi.HOST.UID).
 std::string mpirun(const volsg::test::TempDir& dir, int processes) {
     return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader "
+           "OMPI_MCA_btl_vader_single_copy_mechanism=none "
            "ASAN_OPTIONS=detect_leaks=0 OMPI_MCA_orte_tmpdir_base=" +
            dir.path().string() + " " + VOLSG_MPIEXEC + " --oversubscribe -np " +
            std::to_string(processes) + " ";
