@@ -14,8 +14,13 @@
 #include <volsg/io/SceneWriter.h>
 #include <volsg/render/Renderer.h>
 #include <volsg/render/StereoRenderer.h>
+#include <volsg/sortlast/MpiLaunch.h>
 #include <volsg/volumescene/ReferenceScene.h>
 #include <volsg/volumescene/SceneForFile.h>
+#ifdef VOLSG_HAVE_MPI
+#include "SortLastRender.h"
+#include <volsg/sortlast/MpiSession.h>
+#endif
 
 namespace {
 
@@ -42,6 +47,18 @@ const char* usage =
     "                ShearWarpVolume.interactiveSliceStep)\n"
     "  --verbose     print per volume node the settings it drew with and the error it predicts\n"
     "                against the rendering model (Volume.errorTarget)\n"
+    "Across processes (sort-last, lib/volsg/sortlast/README.md), started by mpirun:\n"
+    "  mpirun -np N volsg-render FILE -o OUT.png [--mpi-timing]\n"
+    "                each process draws its part of the Volume node (a k-d split of its box;\n"
+    "                DVR only, one Volume, no transparent shapes) and rank 0 composites the parts\n"
+    "                in visibility order over its opaque image and writes OUT; from an OME-Zarr\n"
+    "                volume with errorTarget 0 each process reads only its own chunks; without\n"
+    "                mpirun one process draws everything (no MPI start-up)\n"
+    "  --mpi-timing  rank 0 prints each process's read and render times and the compositing\n"
+    "                time\n"
+    "  --mpi-composite reduce|reduce-scatter  how the parts combine: MPI_Reduce to rank 0\n"
+    "                (default), or MPI_Reduce_scatter_block then MPI_Gather (each process\n"
+    "                composites 1/N of the image)\n"
     "%s";
 
 double parseTime(const std::string& text) {
@@ -60,6 +77,13 @@ double parseTolerance(const std::string& text) {
     return t;
 }
 
+#ifdef VOLSG_HAVE_MPI
+/// The MPI session when started by mpirun (null otherwise), and whether the processes have
+/// joined the collective failure check (renderSortLast): a failure before it must join it.
+const volsg::MpiSession* mpiSession = nullptr;
+bool sortLastStarted = false;
+#endif
+
 int run(volsg::cli::Arguments& args) {
     std::string scene, output;
     volsg::RenderOptions options;
@@ -70,6 +94,8 @@ int run(volsg::cli::Arguments& args) {
     volsg::OpenFileOptions open;
     stereo.mode = volsg::StereoMode::Off;
     double time = 0.0;
+    bool mpiTiming = false;
+    std::string mpiComposite = "reduce";
     volsg::cli::Options table;
     table.text({"-o", "--output"}, output)
         .size("--size", options.width, options.height)
@@ -78,6 +104,8 @@ int run(volsg::cli::Arguments& args) {
         .flag("--reference", reference)
         .flag("--interactive", options.interactive)
         .flag("--verbose", verbose)
+        .flag("--mpi-timing", mpiTiming)
+        .value("--mpi-composite", [&](const std::string& v) { mpiComposite = v; })
         .value("--tolerance",
                [&](const std::string& v) { rayOptions.tolerance = parseTolerance(v); })
         .value("--time", [&](const std::string& v) { time = parseTime(v); })
@@ -98,6 +126,9 @@ int run(volsg::cli::Arguments& args) {
     // A .vsgv (volsg-pack) opens as its stored scene, a data file in the scene built for it.
     volsg::ref_ptr<volsg::Node> root = volsg::readSceneForFile(scene, open);
     if (ext == ".iv") {
+#ifdef VOLSG_HAVE_MPI
+        if (mpiSession && mpiSession->rank() != 0) return 0;
+#endif
         volsg::writeSceneToFile(output, *root);
         return 0;
     }
@@ -121,6 +152,31 @@ int run(volsg::cli::Arguments& args) {
         return 0;
     }
     volsg::Renderer renderer;
+#ifdef VOLSG_HAVE_MPI
+    if (mpiSession) {
+        if (reference || stereo.mode != volsg::StereoMode::Off)
+            throw volsg::Error("--reference and --stereo render in one process, not under mpirun");
+        sortLastStarted = true;
+        volsg::cli::SortLastReport report;
+        report.timing = mpiTiming;
+        if (mpiComposite == "reduce-scatter")
+            report.method = volsg::CompositeMethod::ReduceScatter;
+        else if (mpiComposite != "reduce")
+            throw volsg::Error("--mpi-composite wants reduce or reduce-scatter, got '" +
+                               mpiComposite + "'");
+        report.sceneFile = scene;
+        const volsg::Image image =
+            volsg::cli::renderSortLast(renderer, *root, options, *mpiSession, report);
+        if (mpiSession->rank() != 0) return 0;
+        volsg::writeImage(output, image);
+        if (verbose)
+            for (const std::string& line : volsg::cli::volumeQualityLines(*root))
+                std::printf("%s\n", line.c_str());
+        return 0;
+    }
+#endif
+    if (mpiTiming || mpiComposite != "reduce")
+        throw volsg::Error("--mpi-timing and --mpi-composite apply to a run under mpirun");
     const volsg::Image image = volsg::renderStereo(renderer, *root, options, stereo);
     progress.stage(0.95, "writing " + output);
     volsg::writeImage(output, image);
@@ -130,8 +186,45 @@ int run(volsg::cli::Arguments& args) {
     return 0;
 }
 
+#ifdef VOLSG_HAVE_MPI
+/// volsg-render as one of the processes mpirun started: a failure is said once, by the lowest
+/// failing rank, and every process exits with 1.
+int runUnderMpi(int argc, char** argv) {
+    volsg::MpiSession session(argc, argv);
+    mpiSession = &session;
+    try {
+        volsg::cli::Arguments args(argc, argv);
+        return run(args);
+    } catch (const volsg::cli::ReportedElsewhere&) {
+        return 1;
+    } catch (const std::exception& e) {
+        try {
+            if (!sortLastStarted) volsg::cli::agreeOnFailure(session, true, e.what());
+            throw;
+        } catch (const volsg::cli::ReportedElsewhere&) {
+            return 1;
+        } catch (const std::exception& reported) {
+            std::fprintf(stderr, "volsg-render: %s\n", reported.what());
+            return 1;
+        }
+    }
+}
+#endif
+
 } // namespace
 
 int main(int argc, char** argv) {
+    // Only a launcher's environment starts MPI: a plain run pays nothing for it.
+    if (volsg::mpiLaunchSize() > 0) {
+#ifdef VOLSG_HAVE_MPI
+        return runUnderMpi(argc, argv);
+#else
+        if (volsg::mpiLaunchSize() > 1) {
+            std::fprintf(stderr, "volsg-render: started by mpirun, but built without MPI: "
+                                 "each process would render the whole frame\n");
+            return 1;
+        }
+#endif
+    }
     return volsg::cli::runTool("volsg-render", argc, argv, run);
 }

@@ -83,6 +83,14 @@ struct RenderDebug {
     Lighting shapeLighting = Lighting::Automatic;
 };
 
+/// Sort-last rendering across processes (lib/volsg/sortlast/README.md): this process draws
+/// part `part` of `parts` of every Volume (a k-d split of its bricks) and the parts are
+/// composited afterwards. parts == 1: the whole volume, as always.
+struct VolumePartition {
+    int part = 0;
+    int parts = 1;
+};
+
 /// The frame being drawn, as engines see it.
 struct FrameContext {
     RenderCache& cache;
@@ -114,6 +122,8 @@ struct FrameContext {
     std::size_t coarserShapes = 0;
     /// Screen-text characters laid out so far in this frame (limits::maxFrameTextGlyphs).
     std::uint64_t textGlyphs = 0;
+    /// Which part of the volumes this process draws (sort-last; parts 1: all of them).
+    VolumePartition partition{};
 };
 
 } // namespace volsg

@@ -175,22 +175,27 @@ void beginProjection(FrameContext& frame, SliceShared& shared, Mode mode) {
 
 /// One brick's draws: its slices (whole, or row by row, each row with its own box), then
 /// its bounding faces.
-void drawBrick(const BrickState& s, const Brick& b, const Program& program) {
+/// The box whose plane points a draw keeps: `lo`..`hi` within this process's part (sort-last;
+/// the whole box otherwise). Neighbouring parts clamp to the same double, so they share it.
+void setOwnBox(const Program& program, const glm::dvec3& lo, const glm::dvec3& hi,
+               const SlicePlan& plan) {
+    program.set("uOwnMin", glm::vec3(glm::max(lo, plan.partMin)));
+    program.set("uOwnMax", glm::vec3(glm::min(hi, plan.partMax)));
+}
+
+void drawBrick(const BrickState& s, const Brick& b, const Program& program, const SlicePlan& plan) {
     program.set("uTexOrigin", glm::vec3(b.firstVoxel));
     program.set("uTexSize", glm::vec3(b.voxelCount));
     if (s.rows.empty()) {
-        program.set("uOwnMin", glm::vec3(b.boxMin));
-        program.set("uOwnMax", glm::vec3(b.boxMax));
+        setOwnBox(program, b.boxMin, b.boxMax, plan);
         glDrawArrays(GL_TRIANGLES, s.first, s.count);
     } else {
         for (std::size_t r = 0; r < s.rows.size(); ++r) {
             if (s.rowCount[r] == 0) continue;
-            program.set("uOwnMin", glm::vec3(s.rows[r].boxMin));
-            program.set("uOwnMax", glm::vec3(s.rows[r].boxMax));
+            setOwnBox(program, s.rows[r].boxMin, s.rows[r].boxMax, plan);
             glDrawArrays(GL_TRIANGLES, s.rowFirst[r], s.rowCount[r]);
         }
-        program.set("uOwnMin", glm::vec3(b.boxMin)); // the faces: the whole brick
-        program.set("uOwnMax", glm::vec3(b.boxMax));
+        setOwnBox(program, b.boxMin, b.boxMax, plan); // the faces: the whole brick
     }
     if (s.faceCount > 0) {
         // No ray has both plane and face fragments, so this order is as good as any.
@@ -203,7 +208,7 @@ void drawBrick(const BrickState& s, const Brick& b, const Program& program) {
 /// The bricks with geometry, back to front, each made resident (uploaded, perhaps evicting
 /// others) just before its draws.
 void drawBricks(VolumeTextures& v, const Program& program, std::uint64_t budget, bool tagged,
-                SlicingStats& drawn) {
+                const SlicePlan& plan, SlicingStats& drawn) {
     v.vertexArray.bind();
     for (const int i : v.order) {
         BrickState& s = v.bricks[std::size_t(i)];
@@ -211,7 +216,7 @@ void drawBricks(VolumeTextures& v, const Program& program, std::uint64_t budget,
         makeResident(v, std::size_t(i), budget, tagged);
         s.data.bind(kDataUnit);
         if (tagged) s.tags.bind(kTagUnit);
-        drawBrick(s, v.layout.bricks()[std::size_t(i)], program);
+        drawBrick(s, v.layout.bricks()[std::size_t(i)], program, plan);
         ++drawn.bricksDrawn;
     }
 }
@@ -252,7 +257,7 @@ void drawSlices(FrameContext& frame, SliceShared& shared, VolumeTextures& v,
     if (m.lighting) setLightUniforms(program, lights, settings, volume.model, frame.view);
     bindTables(frame, shared, v, m, program);
     beginProjection(frame, shared, m.mode);
-    drawBricks(v, program, settings.textureBudget, m.tagged, drawn);
+    drawBricks(v, program, settings.textureBudget, m.tagged, plan, drawn);
     if (m.mode != kDvr) composite(frame, shared, m.mode, regions, infoMask);
     VertexArray::unbind();
     glActiveTexture(GL_TEXTURE0);

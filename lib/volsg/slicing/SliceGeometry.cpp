@@ -95,12 +95,15 @@ void cutSlices(VolumeTextures& v, const Brick& b, BrickState& s, const VolumeGri
 }
 
 /// The faces of brick b that lie on the volume box and face the viewer (at `viewer`, or
-/// looking along it when orthographic; local coordinates), as triangles.
-void appendFrontFaces(const Brick& b, const glm::ivec3& grid, const glm::dvec3& viewer,
-                      bool orthographic, std::vector<glm::vec3>& out) {
+/// looking along it when orthographic; local coordinates), as triangles. Sort-last: b is the
+/// part of brick `whole` in this process's part; its faces inside the box are not the box's.
+void appendFrontFaces(const Brick& b, const Brick& whole, const glm::ivec3& grid,
+                      const glm::dvec3& viewer, bool orthographic, std::vector<glm::vec3>& out) {
     for (int a = 0; a < 3; ++a)
         for (int side = 0; side < 2; ++side) {
-            const bool onBoundary = side == 0 ? b.index[a] == 0 : b.index[a] == grid[a] - 1;
+            const bool onBoundary =
+                side == 0 ? b.index[a] == 0 && b.boxMin[a] == whole.boxMin[a]
+                          : b.index[a] == grid[a] - 1 && b.boxMax[a] == whole.boxMax[a];
             if (!onBoundary) continue;
             const double c = side == 0 ? b.boxMin[a] : b.boxMax[a];
             const bool facing = orthographic ? (side == 0 ? viewer[a] > 0.0 : viewer[a] < 0.0)
@@ -122,10 +125,11 @@ void appendFrontFaces(const Brick& b, const glm::ivec3& grid, const glm::dvec3& 
 
 /// Brick b's faces that bound the visible part, appended to v.vertices: its front faces on the
 /// volume box, and the clip planes that rays cross into the kept side.
-void appendBoundingFaces(VolumeTextures& v, const Brick& b, BrickState& s, const SlicePlan& plan) {
+void appendBoundingFaces(VolumeTextures& v, const Brick& b, const Brick& whole, BrickState& s,
+                         const SlicePlan& plan) {
     const LocalView& local = plan.local;
     s.faceFirst = GLint(v.vertices.size());
-    appendFrontFaces(b, v.layout.grid(), local.viewer, local.orthographic, v.vertices);
+    appendFrontFaces(b, whole, v.layout.grid(), local.viewer, local.orthographic, v.vertices);
     for (const glm::dvec4& plane : plan.clipPlanes) {
         const glm::dvec3 n(plane);
         const bool entering = local.orthographic ? glm::dot(n, local.viewer) > 0.0
@@ -244,13 +248,18 @@ void cutBricks(VolumeTextures& v, const VolumeGrid& grid, const SlicePlan& plan,
         s.rows.clear();
         s.rowFirst.clear();
         s.rowCount.clear();
+        // Sort-last: only where the brick meets this process's part (all of it otherwise).
+        const Brick& whole = v.layout.bricks()[std::size_t(i)];
+        Brick b = whole;
+        b.boxMin = glm::max(whole.boxMin, plan.partMin);
+        b.boxMax = glm::min(whole.boxMax, plan.partMax);
+        if (glm::any(glm::greaterThanEqual(b.boxMin, b.boxMax))) continue;
         if (plan.method.mode == kDvr && !s.mayEmit) {
             ++drawn.bricksSkipped;
             continue;
         }
-        const Brick& b = v.layout.bricks()[std::size_t(i)];
         cutSlices(v, b, s, grid, plan, drawn);
-        appendBoundingFaces(v, b, s, plan);
+        appendBoundingFaces(v, b, whole, s, plan);
     }
 }
 

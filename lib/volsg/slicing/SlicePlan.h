@@ -1,6 +1,7 @@
 #pragma once
 // The plain data one frame of the Volume slicer hands from stage to stage.
 
+#include <cmath>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -52,6 +53,10 @@ struct SlicePlan {
     PlaneLayout layout;
     std::vector<glm::dvec4> clipPlanes; ///< the clip planes in local coordinates (n, d)
     RowPlan rows;
+    /// Sort-last (FrameContext::partition): the part of the volume box this process draws,
+    /// local coordinates; each brick draws where its own part meets it. Unbounded: all of it.
+    glm::dvec3 partMin{-HUGE_VAL};
+    glm::dvec3 partMax{HUGE_VAL};
 };
 
 } // namespace volsg::slicing

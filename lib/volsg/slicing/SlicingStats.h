@@ -52,6 +52,11 @@ struct SlicingStats {
     bool meetsTarget = true;          ///< the prediction is within the target
     double coverage = 0.0;            ///< share of the image's pixels whose rays cross the box
     double qualityMilliseconds = 0.0; ///< CPU time of the choice (part of cpuMilliseconds)
+    /// Sort-last (FrameContext::partition): where this process's part lies in the front-to-back
+    /// order of the parts for this view (0: in front), and the voxels it spans.
+    int partPosition = 0;
+    glm::ivec3 partFirstVoxel{0};
+    glm::ivec3 partLastVoxel{-1};
 
     // Cumulative.
     std::uint64_t frames = 0;

@@ -15,6 +15,7 @@
 #include <volsg/slicing/SlicingQuality.h>
 #include <volsg/slicing/TextureStaging.h>
 #include <volsg/slicing/VolumeTextures.h>
+#include <volsg/sortlast/KdVolumeSplit.h>
 #include <volsg/volume/VolumeGrid.h>
 
 namespace volsg {
@@ -165,6 +166,29 @@ SlicingStats layoutStats(const VolumeTextures& v, const SlicePlan& plan,
     return drawn;
 }
 
+/// Sort-last (lib/volsg/sortlast/README.md): the box of this process's part of a k-d split of
+/// the volume, and where the part lies front to back for this view. Only DVR's "over" is
+/// composited across processes (MIP's partial would need its raw extreme values, not colours).
+void partitionVolume(const RayCastVolume& volume, const VolumePartition& partition, SlicePlan& plan,
+                     SlicingStats& drawn) {
+    if (partition.parts <= 1) {
+        drawn.partLastVoxel = volume.data->dimensions() - 1;
+        return;
+    }
+    if (volume.mode != VolumeRenderMode::DVR)
+        throw Error("Volume: rendering across processes (sort-last) composites DVR only, not "
+                    "MIP, MINIP or AVERAGE");
+    const KdVolumeSplit split(volume.data->dimensions(), volume.data->spacing(), partition.parts);
+    const KdVolumeSplit::Part& part = split.part(partition.part);
+    // An empty part (more processes than cells) draws nothing: an empty box.
+    plan.partMin = part.empty ? glm::dvec3(0.0) : part.boxMin;
+    plan.partMax = part.empty ? glm::dvec3(0.0) : part.boxMax;
+    const std::vector<int> order = split.frontToBack(plan.local.viewer, plan.local.orthographic);
+    drawn.partPosition = int(std::find(order.begin(), order.end(), partition.part) - order.begin());
+    drawn.partFirstVoxel = part.firstVoxel;
+    drawn.partLastVoxel = part.lastVoxel;
+}
+
 /// After the draws: drops what only this grid's first frame needed, and counts.
 void finishFrame(VolumeTextures& v, SlicingStats& drawn) {
     v.staged.reset(); // its bricks are uploaded; skipped (empty) ones upload directly later
@@ -207,6 +231,7 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     SlicingStats drawn = layoutStats(v, plan, chosen, quality);
     plan.clipPlanes = localClipPlanes(volume);
     plan.rows = planRows(v, plan, chosen);
+    partitionVolume(volume, frame.partition, plan, drawn);
     cutBricks(v, *volume.data, plan, drawn);
 
     const auto prepared = std::chrono::steady_clock::now();

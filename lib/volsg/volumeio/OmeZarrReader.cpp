@@ -382,4 +382,124 @@ ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level, std::uint64_
     return grid;
 }
 
+namespace {
+
+/// One level's array, opened for reading parts of it.
+struct OpenLevel {
+    OmeZarrLevel where;
+    std::string zarrayPath;
+    ZarrArrayLayout layout;
+    glm::ivec3 dims{0};
+};
+
+OpenLevel openLevel(const std::string& path, int level, std::uint64_t byteLimit) {
+    std::error_code ec;
+    if (!fs::is_directory(path, ec))
+        throw Error(std::string("cannot open OME-Zarr image: ") +
+                        (fs::exists(path, ec) ? "not a folder" : "no such folder"),
+                    path);
+    OpenLevel open;
+    open.where = findLevelChecked(fs::path(path).lexically_normal(), level);
+    open.zarrayPath = (fs::path(open.where.arrayFolder) / ".zarray").string();
+    open.layout = readZarrArrayLayout(open.where.arrayFolder, byteLimit);
+    const std::size_t rank = open.layout.shape.size();
+    open.dims = glm::ivec3(int(open.layout.shape[rank - 1]), int(open.layout.shape[rank - 2]),
+                           int(open.layout.shape[rank - 3]));
+    return open;
+}
+
+void checkRegion(const OpenLevel& open, glm::ivec3 first, glm::ivec3 count) {
+    const glm::ivec3 end = first + count;
+    if (glm::any(glm::lessThan(first, glm::ivec3(0))) ||
+        glm::any(glm::lessThan(count, glm::ivec3(1))) || glm::any(glm::greaterThan(end, open.dims)))
+        throw Error("the region from voxel (" + std::to_string(first.x) + ", " +
+                        std::to_string(first.y) + ", " + std::to_string(first.z) + ") of " +
+                        std::to_string(count.x) + " x " + std::to_string(count.y) + " x " +
+                        std::to_string(count.z) + " voxels is not inside the level's " +
+                        std::to_string(open.dims.x) + " x " + std::to_string(open.dims.y) + " x " +
+                        std::to_string(open.dims.z),
+                    open.zarrayPath);
+}
+
+/// Copies the voxels first .. first + count of the level into `grid`, voxel v of the level at
+/// grid voxel v - origin, reading only the chunks that meet the box.
+void readChunksOfRegion(const OpenLevel& open, glm::ivec3 first, glm::ivec3 count, VolumeGrid& grid,
+                        glm::ivec3 origin) {
+    const ZarrArrayLayout& layout = open.layout;
+    const std::size_t rank = layout.shape.size();
+    const std::span<std::byte> out = grid.bytes();
+    const std::size_t size = voxelTypeSize(layout.type);
+    const glm::ivec3 chunk(int(layout.chunks[rank - 1]), int(layout.chunks[rank - 2]),
+                           int(layout.chunks[rank - 3]));
+    const glm::ivec3 end = first + count;
+    ChunkLoader loader(open.zarrayPath, layout);
+    std::vector<std::uint64_t> index(rank, 0);
+    const glm::ivec3 firstChunk = first / chunk, lastChunk = (end - 1) / chunk;
+    for (int cz = firstChunk.z; cz <= lastChunk.z; ++cz)
+        for (int cy = firstChunk.y; cy <= lastChunk.y; ++cy)
+            for (int cx = firstChunk.x; cx <= lastChunk.x; ++cx) {
+                index[rank - 3] = std::uint64_t(cz);
+                index[rank - 2] = std::uint64_t(cy);
+                index[rank - 1] = std::uint64_t(cx);
+                const std::span<const std::byte> voxels = loader.load(index);
+                const glm::ivec3 chunkFirst = glm::ivec3(cx, cy, cz) * chunk;
+                const glm::ivec3 from = glm::max(chunkFirst, first);
+                const glm::ivec3 to = glm::min(chunkFirst + chunk, end);
+                const std::size_t row = std::size_t(to.x - from.x) * size;
+                for (int z = from.z; z < to.z; ++z)
+                    for (int y = from.y; y < to.y; ++y) {
+                        const std::size_t in =
+                            ((std::size_t(z - chunkFirst.z) * std::size_t(chunk.y) +
+                              std::size_t(y - chunkFirst.y)) *
+                                 std::size_t(chunk.x) +
+                             std::size_t(from.x - chunkFirst.x)) *
+                            size;
+                        const glm::ivec3 at = glm::ivec3(from.x, y, z) - origin;
+                        std::memcpy(out.data() + grid.index(at.x, at.y, at.z) * size,
+                                    voxels.data() + in, row);
+                    }
+            }
+}
+
+} // namespace
+
+ref_ptr<VolumeGrid> readOmeZarrRegion(const std::string& path, int level, glm::ivec3 first,
+                                      glm::ivec3 count, std::uint64_t byteLimit) {
+    const OpenLevel open = openLevel(path, level, byteLimit);
+    checkRegion(open, first, count);
+    checkedGridBytes(open.zarrayPath, 0, count, open.layout.type, open.where.spacing, byteLimit);
+    ref_ptr<VolumeGrid> grid;
+    try {
+        grid = VolumeGrid::create(count, open.layout.type, open.where.spacing, byteLimit);
+    } catch (const Error& e) {
+        throw Error(e.message(), open.zarrayPath);
+    }
+    readChunksOfRegion(open, first, count, *grid, first);
+    return grid;
+}
+
+glm::ivec3 readOmeZarrDimensions(const std::string& path, int level) {
+    return openLevel(path, level, VolumeGrid::defaultByteLimit).dims;
+}
+
+ref_ptr<VolumeGrid> readOmeZarrWithin(const std::string& path, int level, glm::ivec3 first,
+                                      glm::ivec3 count, std::uint64_t byteLimit) {
+    const OpenLevel open = openLevel(path, level, byteLimit);
+    checkRegion(open, first, count);
+    checkedGridBytes(open.zarrayPath, 0, open.dims, open.layout.type, open.where.spacing,
+                     byteLimit);
+    ref_ptr<VolumeGrid> grid;
+    try {
+        grid = VolumeGrid::create(open.dims, open.layout.type, open.where.spacing, byteLimit);
+    } catch (const Error& e) {
+        throw Error(e.message(), open.zarrayPath);
+    }
+    grid->setGeometry(open.where.geometry);
+    if (open.layout.fillValue != 0.0) // a new grid holds zeros
+        for (std::size_t i = 0; i < grid->voxelCount(); ++i)
+            grid->setValue(i, open.layout.fillValue);
+    readChunksOfRegion(open, first, count, *grid, glm::ivec3(0));
+    return grid;
+}
+
 } // namespace volsg

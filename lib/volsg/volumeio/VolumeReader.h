@@ -93,6 +93,25 @@ ref_ptr<VolumeGrid> readDicomSeries(const std::string& path,
 ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level = 0,
                                 std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
 
+/// The voxels from `first` (x, y, z) of `count` voxels of one level of an OME-Zarr image, as
+/// readOmeZarr reads them, opening only the chunks that meet that box: how a process of a
+/// sort-last render (lib/volsg/sortlast/README.md), or anything else that shows a part, loads
+/// only its own data. Spacing as readOmeZarr; no geometry (the box is not placed). Throws
+/// Error naming the .zarray for a box not inside the level, and as readOmeZarr.
+ref_ptr<VolumeGrid> readOmeZarrRegion(const std::string& path, int level, glm::ivec3 first,
+                                      glm::ivec3 count,
+                                      std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
+
+/// The voxels (x, y, z) of one level of an OME-Zarr image, from its metadata alone.
+glm::ivec3 readOmeZarrDimensions(const std::string& path, int level = 0);
+
+/// The whole level as readOmeZarr reads it (size, spacing, geometry), but with only the chunks
+/// that meet the box from `first` of `count` voxels read: the other voxels hold the array's
+/// fill value. A sort-last process's grid: its own part and ghost voxels, nothing else read.
+ref_ptr<VolumeGrid> readOmeZarrWithin(const std::string& path, int level, glm::ivec3 first,
+                                      glm::ivec3 count,
+                                      std::uint64_t byteLimit = VolumeGrid::defaultByteLimit);
+
 /// True when `path` is a folder named *.zarr or holding .zattrs, .zgroup or .zarray.
 bool isZarrFolder(const std::string& path);
 

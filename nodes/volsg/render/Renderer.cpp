@@ -200,7 +200,8 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
                                     : glm::dvec4(glm::dvec3(eyeToWorld[3]), 1.0);
     view.headlight = !survey.hasLight();
 
-    const bool floatColor = floatTarget || !(options.eightBitOutput || options.debug.byteTarget);
+    const bool floatColor = floatTarget || options.volumePartial ||
+                            !(options.eightBitOutput || options.debug.byteTarget);
     target.resize(options.width, options.height, floatColor);
     const bool multisample = target.setMultisample(options.samples) > 1;
     if (multisample)
@@ -225,6 +226,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
                        options.debug};
     static std::atomic<std::uint64_t> renders{0};
     frame.renderSerial = ++renders;
+    frame.partition = options.partition;
     shapes.setBatching(options.debug.batchShapes);
     shapes.setLighting(options.debug.shapeLighting);
     RenderAction action(frame);
@@ -232,6 +234,13 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
         // The multisampled opaque pass is resolved into the target for everything after it.
         if (pass == RenderPass::Volume && multisample) target.resolveMultisample();
         if (options.opaqueOnly && pass != RenderPass::Opaque) break;
+        if (options.volumePartial && pass == RenderPass::Transparent) break;
+        if (options.volumePartial && pass == RenderPass::Volume) {
+            // The opaque colour goes (rank 0 composites over its own opaque image); its depth
+            // stays and stops the volume as in a whole frame.
+            glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
         setPassState(pass);
         shapes.beginPass();
         action.setPass(pass);

@@ -39,6 +39,12 @@ struct RenderOptions {
     bool eightBitOutput = false;
     /// Optimisations switched off, to measure them (volsg-bench) or test fallbacks.
     RenderDebug debug;
+    /// Sort-last rendering (lib/volsg/sortlast/README.md): the partial image of this process,
+    /// its part of the volumes (`partition`) premultiplied over transparent black. The opaque
+    /// pass still draws, so its depth stops the volumes; its colour is cleared to (0, 0, 0, 0)
+    /// before the Volume pass; no transparent pass. Always the float target.
+    bool volumePartial = false;
+    VolumePartition partition{};
 };
 
 /// What a Renderer has done, for tests and the benchmark: a frame where nothing changed

@@ -1,0 +1,51 @@
+#pragma once
+// A sort-last process reading only its own part of the volume (and a ghost layer) from an
+// OME-Zarr image, chunk by chunk. lib/volsg/sortlast/README.md, "Loading only a process's own
+// data".
+
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include <volsg/core/Node.h>
+#include <volsg/volume/VolumeGrid.h>
+
+namespace volsg {
+class Volume;
+}
+
+namespace volsg::cli {
+
+/// What loading the process's own part did.
+struct OwnPartLoad {
+    bool loaded = false; ///< only the part and its ghost were read
+    std::string whyNot;  ///< when not, why (the whole volume is read as usual)
+    double milliseconds = 0.0;
+    double voxelsRead = 0.0; ///< voxels of the box read (the chunks hold some more)
+    /// 16-bit and float data take the data's own range where a transfer function gives none:
+    /// the processes must agree on the whole volume's (agreeOnRange).
+    bool needsRange = false;
+    glm::dvec2 ownRange{0.0}; ///< smallest and largest finite value of the box read
+    VoxelType type = VoxelType::UByte;
+};
+
+/// Voxels beyond its box a part's fragments sample under the fixed plane rules (2 planes a
+/// voxel, one sample each): one for trilinear interpolation, one for lighting's central
+/// differences, and two for the ray's stretch a fragment stands for (half a slab; a box
+/// face's sliver, under one plane spacing: 0.5 L0 / cos, under 2 voxels for rays within 75
+/// degrees of the view axis).
+constexpr int kOwnPartGhost = 4;
+
+/// When the scene's one VolumeData reads an OME-Zarr image (no labels) and `volume` draws under its
+/// fixed plane rules (errorTarget 0, numPlanes 0, samplesPerPlane 1, not interactive), reads part
+/// `part` of `parts` (KdVolumeSplit) with kOwnPartGhost voxels around it into the node
+/// (VolumeData::adoptLoaded); the rest of the grid holds the fill value. Otherwise reads
+/// nothing and says why. Relative file names resolve against `sceneFile`'s folder.
+OwnPartLoad loadOwnPart(Node& root, const Volume& volume, const std::string& sceneFile,
+                        bool interactive, int part, int parts);
+
+/// Gives the transfer functions that take the data's own range `range` (the whole volume's,
+/// agreed by the processes) as their dataRange, as one process reading it all would use.
+void useDataRange(Node& root, glm::dvec2 range);
+
+} // namespace volsg::cli

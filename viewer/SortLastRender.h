@@ -1,0 +1,43 @@
+#pragma once
+// volsg-render across MPI processes (sort-last): each renders its part of the volume, rank 0
+// composites the parts over its opaque image. lib/volsg/sortlast/README.md.
+
+#include <string>
+
+#include <volsg/core/Node.h>
+#include <volsg/image/Image.h>
+#include <volsg/render/Renderer.h>
+#include <volsg/sortlast/MpiCompositor.h>
+
+namespace volsg {
+class MpiSession;
+}
+
+namespace volsg::cli {
+
+/// An error another process reported already: this one exits with failure and says nothing.
+struct ReportedElsewhere {};
+
+struct SortLastReport {
+    CompositeMethod method = CompositeMethod::Reduce;
+    std::string sceneFile; ///< where the scene's relative file names resolve
+    bool timing = false;   ///< rank 0 prints each process's times and the compositing times
+    /// With timing: composites timed this many times (median and fastest: on a loaded machine
+    /// the fastest is the cost, the median what a frame may see).
+    int compositeRepeats = 15;
+};
+
+/// Renders `root` across the processes of `mpi`: every process draws the opaque geometry
+/// (whose depth stops its volume part) and its part of the Volume's bricks into a partial
+/// image; the partials are composited in visibility order onto rank 0's opaque image. Returns
+/// the frame on rank 0 (an empty Image elsewhere). Collective. A failure on any process fails
+/// all: the lowest failing rank throws its Error, the others throw ReportedElsewhere.
+Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& options,
+                     const MpiSession& mpi, const SortLastReport& report);
+
+/// Collective: when any process `failed`, the lowest failing rank throws Error(why) and the
+/// others throw ReportedElsewhere, so all exit with one line on stderr and none is left
+/// waiting in a reduction the failed one never joins.
+void agreeOnFailure(const MpiSession& mpi, bool failed, const std::string& why);
+
+} // namespace volsg::cli
