@@ -186,6 +186,11 @@ void setOwnBox(const Program& program, const glm::dvec3& lo, const glm::dvec3& h
 void drawBrick(const BrickState& s, const Brick& b, const Program& program, const SlicePlan& plan) {
     program.set("uTexOrigin", glm::vec3(b.firstVoxel));
     program.set("uTexSize", glm::vec3(b.voxelCount));
+    // The whole brick (b is), also under sort-last: every process's fragments are the ones a
+    // single process draws.
+    const glm::dvec3 half = plan.local.halfExtent;
+    program.set("uSlabMin", glm::vec3(plan.slabsEndAtBricks ? b.boxMin : -half));
+    program.set("uSlabMax", glm::vec3(plan.slabsEndAtBricks ? b.boxMax : half));
     if (s.rows.empty()) {
         setOwnBox(program, b.boxMin, b.boxMax, plan);
         glDrawArrays(GL_TRIANGLES, s.first, s.count);

@@ -94,17 +94,19 @@ void cutSlices(VolumeTextures& v, const Brick& b, BrickState& s, const VolumeGri
     drawn.sliceTriangles += std::size_t(s.count) / 3;
 }
 
-/// The faces of brick b that lie on the volume box and face the viewer (at `viewer`, or
-/// looking along it when orthographic; local coordinates), as triangles. Sort-last: b is the
-/// part of brick `whole` in this process's part; its faces inside the box are not the box's.
-void appendFrontFaces(const Brick& b, const Brick& whole, const glm::ivec3& grid,
+/// The faces of brick b that face the viewer (at `viewer`, or looking along it when
+/// orthographic; local coordinates), as triangles: those on the volume box, and with
+/// `seamsToo` (SlicePlan::slabsEndAtBricks) those between bricks. They stand for the rays no
+/// plane crosses within the box (or the brick). Sort-last: b is the part of brick `whole` in
+/// this process's part; the faces the part cuts through are not the brick's.
+void appendFrontFaces(const Brick& b, const Brick& whole, const glm::ivec3& grid, bool seamsToo,
                       const glm::dvec3& viewer, bool orthographic, std::vector<glm::vec3>& out) {
     for (int a = 0; a < 3; ++a)
         for (int side = 0; side < 2; ++side) {
-            const bool onBoundary =
-                side == 0 ? b.index[a] == 0 && b.boxMin[a] == whole.boxMin[a]
-                          : b.index[a] == grid[a] - 1 && b.boxMax[a] == whole.boxMax[a];
-            if (!onBoundary) continue;
+            const bool wholeFace =
+                side == 0 ? b.boxMin[a] == whole.boxMin[a] : b.boxMax[a] == whole.boxMax[a];
+            const bool onBox = side == 0 ? b.index[a] == 0 : b.index[a] == grid[a] - 1;
+            if (!wholeFace || !(onBox || seamsToo)) continue;
             const double c = side == 0 ? b.boxMin[a] : b.boxMax[a];
             const bool facing = orthographic ? (side == 0 ? viewer[a] > 0.0 : viewer[a] < 0.0)
                                              : (side == 0 ? viewer[a] < c : viewer[a] > c);
@@ -123,13 +125,14 @@ void appendFrontFaces(const Brick& b, const Brick& whole, const glm::ivec3& grid
         }
 }
 
-/// Brick b's faces that bound the visible part, appended to v.vertices: its front faces on the
-/// volume box, and the clip planes that rays cross into the kept side.
+/// Brick b's faces that bound the visible part, appended to v.vertices: its front faces (on the
+/// volume box, or at seams too), and the clip planes that rays cross into the kept side.
 void appendBoundingFaces(VolumeTextures& v, const Brick& b, const Brick& whole, BrickState& s,
                          const SlicePlan& plan) {
     const LocalView& local = plan.local;
     s.faceFirst = GLint(v.vertices.size());
-    appendFrontFaces(b, whole, v.layout.grid(), local.viewer, local.orthographic, v.vertices);
+    appendFrontFaces(b, whole, v.layout.grid(), plan.slabsEndAtBricks, local.viewer,
+                     local.orthographic, v.vertices);
     for (const glm::dvec4& plane : plan.clipPlanes) {
         const glm::dvec3 n(plane);
         const bool entering = local.orthographic ? glm::dot(n, local.viewer) > 0.0

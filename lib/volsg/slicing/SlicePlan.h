@@ -57,6 +57,22 @@ struct SlicePlan {
     /// local coordinates; each brick draws where its own part meets it. Unbounded: all of it.
     glm::dvec3 partMin{-HUGE_VAL};
     glm::dvec3 partMax{HUGE_VAL};
+    /// Slabs end at the faces of their brick, whose front faces are drawn at seams too: the
+    /// slab's samples then stay in the brick's texture (slabsEndAtBricks).
+    bool slabsEndAtBricks = false;
 };
+
+/// Whether slabs end at brick faces: where the volume has several bricks, a fragment samples
+/// beyond its plane point (several samples per plane, pre-integration, MIP's crossings, tags)
+/// and planes lie more than `L0` apart (`spacingLocal`, local units), so that half a slab
+/// reaches past a seam by more than half a voxel and would read texels the brick clamps.
+/// Elsewhere slabs run between planes across seams as in one brick (at most a quarter voxel
+/// past a seam at the fixed rules' two planes per voxel: within 1/255 of one brick).
+inline bool slabsEndAtBricks(const SliceMethod& method, std::size_t bricks, double spacingLocal,
+                             double L0) {
+    const bool samplesOnlyItsPoint =
+        method.mode == kDvr && method.slabSamples <= 1 && !method.preIntegrated && !method.tagged;
+    return bricks > 1 && !samplesOnlyItsPoint && spacingLocal > L0;
+}
 
 } // namespace volsg::slicing

@@ -70,6 +70,8 @@ uniform vec3 uTexOrigin;    // voxel index of the brick texture's first texel
 uniform vec3 uTexSize;      // texels of the brick texture
 uniform vec3 uOwnMin;       // the part of the volume box this brick draws (local)
 uniform vec3 uOwnMax;
+uniform vec3 uSlabMin;      // where slabs end (local): the volume box, or the brick's box
+uniform vec3 uSlabMax;      // (SlicePlan::slabsEndAtBricks) so samples stay in its texture
 uniform float uDataScale;   // data = texel * uDataScale + uDataOffset
 uniform float uDataOffset;
 uniform bool uOrthographic;
@@ -441,9 +443,10 @@ void main() {
     float depthRate = dot(uDepthPlane.xyz, dir); // > 0: the ray moves away from the eye
     float ds = uPlaneSpacing / depthRate;
 
-    // The stretch of the ray around this point that may hold volume: inside the box, between
-    // the near and far planes, on the kept side of every clip plane.
-    vec2 inBox = slabInterval(vLocal, dir, -uHalfExtent, uHalfExtent);
+    // The stretch of the ray around this point that may hold volume: inside the box (or the
+    // brick's, whose neighbours' fragments stand for the ray beyond its faces), between the
+    // near and far planes, on the kept side of every clip plane.
+    vec2 inBox = slabInterval(vLocal, dir, uSlabMin, uSlabMax);
     float tEnter = inBox.x, tExit = inBox.y;
     tEnter = max(tEnter, (uNear - depth) / depthRate);
     tExit = min(tExit, (uFar - depth) / depthRate);
@@ -467,8 +470,8 @@ void main() {
     float front, back;
     vec3 origin = vLocal; // the slab is [origin - front dir, origin + back dir]
     if (uFacePass) {
-        // A front face of the box: it stands for the ray's whole stretch through the volume
-        // when no plane crosses that stretch (a sliver near a silhouette, thinner than the
+        // A front face of the box (or brick): it stands for the ray's whole stretch through
+        // it when no plane crosses that stretch (a sliver near a silhouette, thinner than the
         // plane spacing), and for nothing otherwise, when plane fragments cover the ray.
         float t0 = max(tEnter, 0.0);
         if (!(tExit > t0)) discard;

@@ -231,6 +231,10 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     SlicingStats drawn = layoutStats(v, plan, chosen, quality);
     plan.clipPlanes = localClipPlanes(volume);
     plan.rows = planRows(v, plan, chosen);
+    plan.slabsEndAtBricks = slabsEndAtBricks(
+        plan.method, v.layout.bricks().size(),
+        plan.layout.spacing * glm::length(plan.local.eyeToLocal3 * glm::dvec3(0.0, 0.0, 1.0)),
+        plan.local.L0);
     partitionVolume(volume, frame.partition, plan, drawn);
     cutBricks(v, *volume.data, plan, drawn);
 
