@@ -73,7 +73,10 @@ LodSelection selectBricks(const PagedLayout& layout, const LodView& view,
     auto visible = [&](const BrickKey& key) {
         glm::dvec3 lo, hi;
         layout.box(key, lo, hi);
-        if (!outsideFrustum(clipFromLocal, lo, hi)) return true;
+        const bool inRegion = request.regionMin.x > request.regionMax.x ||
+                              (glm::all(glm::lessThan(lo, request.regionMax)) &&
+                               glm::all(glm::greaterThan(hi, request.regionMin)));
+        if (inRegion && !outsideFrustum(clipFromLocal, lo, hi)) return true;
         ++out.culled;
         return false;
     };
@@ -100,23 +103,25 @@ LodSelection selectBricks(const PagedLayout& layout, const LodView& view,
         open.pop();
         if (c.pixels <= request.pixelBudget || c.key.level == 0) continue; // fine enough
         std::vector<BrickKey> children;
-        bool missing = false;
         std::uint64_t childBytes = 0;
         for (const BrickKey& child : layout.children(c.key)) {
             if (!visible(child)) continue;
             children.push_back(child);
             childBytes += bytesOf(child);
-            if (!request.available(child)) {
-                want(child);
-                missing = true;
-            }
         }
-        if (missing) continue;
-        const std::uint64_t after = out.bytes - bytesOf(c.key) + childBytes;
+        // The budget first: children that could never be drawn are not worth loading.
+        const std::uint64_t after = out.bytes + childBytes; // the parent stays, a fallback
         if (request.textureBudget > 0 && after > request.textureBudget) {
             out.budgetLimited = true;
             continue;
         }
+        bool missing = false;
+        for (const BrickKey& child : children)
+            if (!request.available(child)) {
+                want(child);
+                missing = true;
+            }
+        if (missing) continue;
         cut.erase(c.key);
         refined.insert(c.key);
         out.bytes = after;
@@ -125,6 +130,7 @@ LodSelection selectBricks(const PagedLayout& layout, const LodView& view,
             open.push({projectedVoxelPixels(layout, child, view), child});
         }
     }
+    out.refined.assign(refined.begin(), refined.end());
     std::sort(wanted.begin(), wanted.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& w : wanted)

@@ -30,12 +30,18 @@ struct LodRequest {
     std::function<bool(const BrickKey&)> available;
     /// The texture bytes of a brick.
     std::function<std::uint64_t(const BrickKey&)> bytes;
+    /// Only bricks meeting this local box can show anything (a BoxClip that removes the rest);
+    /// the others are left out as if outside the view. Empty (min > max): the whole volume.
+    glm::dvec3 regionMin{1.0}, regionMax{-1.0};
 };
 
 /// One frame's choice.
 struct LodSelection {
     std::vector<BrickKey> drawn;  ///< back to front
     std::vector<BrickKey> wanted; ///< missing finer bricks, coarse levels first, then nearest
+    /// The bricks replaced by their children: the fallback should a child go, so a cache keeps
+    /// them as it keeps the drawn ones.
+    std::vector<BrickKey> refined;
     /// Drawn bricks coarser than the pixel budget asks (level > 0 and voxels above it).
     int coarser = 0;
     double worstPixels = 0.0;   ///< the largest projected voxel of the drawn bricks (pixels)
@@ -52,7 +58,8 @@ double projectedVoxelPixels(const PagedLayout& layout, const BrickKey& key, cons
 
 /// Refines from the coarsest level, largest projected voxels first: a brick above the pixel
 /// budget is replaced by its children (those inside the view frustum) when all of them are
-/// available and their textures fit the budget; its missing children are wanted. The coarsest
+/// available and their textures fit the budget beside those of the bricks drawn and refined
+/// (kept as fallbacks); its missing children are wanted. The coarsest
 /// level's bricks are drawn when available and wanted otherwise.
 LodSelection selectBricks(const PagedLayout& layout, const LodView& view,
                           const LodRequest& request);

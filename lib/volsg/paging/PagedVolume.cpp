@@ -117,9 +117,17 @@ bool PagedVolume::available(const BrickKey& key) const {
 }
 
 void PagedVolume::request(const std::vector<BrickKey>& wanted) {
+    // At most half the cache's budget at a time: more would evict the first arrivals before
+    // a frame takes them to the GPU, and loads would chase each other for ever.
     std::vector<BrickKey> loadable;
-    for (const BrickKey& key : wanted)
-        if (!whole_.count(key.level)) loadable.push_back(key);
+    std::uint64_t bytes = 0;
+    const std::uint64_t room = cache_->stats().budgetBytes / 2;
+    for (const BrickKey& key : wanted) {
+        if (whole_.count(key.level)) continue;
+        bytes += brickBytes(key);
+        if (bytes > room && !loadable.empty()) break;
+        loadable.push_back(key);
+    }
     cache_->request(std::move(loadable));
 }
 

@@ -53,7 +53,9 @@ public:
     std::shared_ptr<const HostBrick> find(const BrickKey& key);
     /// Whether find() would answer (without marking anything used).
     bool available(const BrickKey& key) const;
-    /// Asks the loaders for these bricks, most urgent first (levels kept whole are left out).
+    /// Asks the loaders for these bricks, most urgent first (levels kept whole are left out),
+    /// as many as fill half the cache's budget: the caller takes them to the GPU and asks for
+    /// the next ones in a later frame.
     void request(const std::vector<BrickKey>& wanted);
 
     BrickCache& cache() { return *cache_; }

@@ -178,6 +178,10 @@ void beginProjection(FrameContext& frame, SliceShared& shared, Mode mode) {
 void drawBrick(const BrickState& s, const Brick& b, const Program& program) {
     program.set("uTexOrigin", glm::vec3(b.firstVoxel));
     program.set("uTexSize", glm::vec3(b.voxelCount));
+    if (b.levelSpacing.x > 0.0) { // a paged brick: its level's voxels
+        program.set("uInvSpacing", glm::vec3(1.0 / b.levelSpacing));
+        program.set("uVoxelCount", glm::vec3(b.levelDimensions));
+    }
     if (s.rows.empty()) {
         program.set("uOwnMin", glm::vec3(b.boxMin));
         program.set("uOwnMax", glm::vec3(b.boxMax));

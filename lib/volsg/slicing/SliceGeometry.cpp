@@ -96,11 +96,15 @@ void cutSlices(VolumeTextures& v, const Brick& b, BrickState& s, const VolumeGri
 
 /// The faces of brick b that lie on the volume box and face the viewer (at `viewer`, or
 /// looking along it when orthographic; local coordinates), as triangles.
-void appendFrontFaces(const Brick& b, const glm::ivec3& grid, const glm::dvec3& viewer,
-                      bool orthographic, std::vector<glm::vec3>& out) {
+void appendFrontFaces(const Brick& b, const glm::ivec3& grid, const glm::dvec3& halfExtent,
+                      const glm::dvec3& viewer, bool orthographic, std::vector<glm::vec3>& out) {
     for (int a = 0; a < 3; ++a)
         for (int side = 0; side < 2; ++side) {
-            const bool onBoundary = side == 0 ? b.index[a] == 0 : b.index[a] == grid[a] - 1;
+            // A paged brick (any level) lies on the box where its region reaches the face.
+            const bool onBoundary =
+                b.levelSpacing.x > 0.0
+                    ? (side == 0 ? b.boxMin[a] <= -halfExtent[a] : b.boxMax[a] >= halfExtent[a])
+                    : (side == 0 ? b.index[a] == 0 : b.index[a] == grid[a] - 1);
             if (!onBoundary) continue;
             const double c = side == 0 ? b.boxMin[a] : b.boxMax[a];
             const bool facing = orthographic ? (side == 0 ? viewer[a] > 0.0 : viewer[a] < 0.0)
@@ -125,7 +129,8 @@ void appendFrontFaces(const Brick& b, const glm::ivec3& grid, const glm::dvec3& 
 void appendBoundingFaces(VolumeTextures& v, const Brick& b, BrickState& s, const SlicePlan& plan) {
     const LocalView& local = plan.local;
     s.faceFirst = GLint(v.vertices.size());
-    appendFrontFaces(b, v.layout.grid(), local.viewer, local.orthographic, v.vertices);
+    appendFrontFaces(b, v.layout.grid(), local.halfExtent, local.viewer, local.orthographic,
+                     v.vertices);
     for (const glm::dvec4& plane : plan.clipPlanes) {
         const glm::dvec3 n(plane);
         const bool entering = local.orthographic ? glm::dot(n, local.viewer) > 0.0
@@ -234,7 +239,9 @@ RowPlan planRows(VolumeTextures& v, const SlicePlan& plan, const SlicingSettings
 
 void cutBricks(VolumeTextures& v, const VolumeGrid& grid, const SlicePlan& plan,
                SlicingStats& drawn) {
-    v.layout.backToFront(plan.local.viewer, plan.local.orthographic, v.order);
+    // A paged volume's bricks come ordered by their chooser (PagedBricks.h).
+    if (!v.layout.explicitBricks())
+        v.layout.backToFront(plan.local.viewer, plan.local.orthographic, v.order);
     drawn.cellRowGroup = plan.rows.group;
     v.vertices.clear();
     for (const int i : v.order) {
