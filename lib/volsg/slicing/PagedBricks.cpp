@@ -14,6 +14,13 @@ namespace volsg::slicing {
 
 namespace {
 
+/// Texture bytes a frame may upload for bricks new to the GPU: the first frame and the
+/// interactive ones stay quick (a brick beyond it counts as not yet at hand), still frames
+/// converge in a few.
+constexpr std::uint64_t kFirstFrameUploads = std::uint64_t(8) << 20;
+constexpr std::uint64_t kInteractiveUploads = std::uint64_t(16) << 20;
+constexpr std::uint64_t kStillUploads = std::uint64_t(64) << 20;
+
 std::uint64_t textureBytesOf(const PagedLayout& layout, const BrickKey& key,
                              std::size_t texelBytes) {
     glm::ivec3 first, count;
@@ -110,9 +117,18 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
     // choice refines a brick only when all its children are at hand, and the GPU keeps them
     // whatever the host cache evicts meanwhile (a host budget smaller than a brick's children
     // of every parent would otherwise never have all of them at once).
+    const std::uint64_t allowance = slots.slotOf.empty() ? kFirstFrameUploads
+                                    : frame.interactive  ? kInteractiveUploads
+                                                         : kStillUploads;
+    std::uint64_t uploading = 0; // bytes this frame uploads or has promised to
+    bool heldBack = false;       // a brick at hand waits for a later frame's uploads
     const std::set<std::size_t> lastDrawn(slots.lastDrawn.begin(), slots.lastDrawn.end());
     for (const BrickKey& key : slots.wanted) {
         if (slots.slotOf.count(key)) continue;
+        if (uploading + textureBytesOf(layout, key, texelBytes) > allowance) {
+            heldBack = true;
+            break;
+        }
         const std::shared_ptr<const HostBrick> host = paged.find(key);
         if (!host) continue;
         const std::uint64_t bytes = textureBytesOf(layout, key, texelBytes);
@@ -120,6 +136,7 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
         }
         if (v.residentBytes + bytes > budget) break;
         place(slots, v, layout, key, *host, bytes);
+        uploading += bytes;
     }
 
     LodView view;
@@ -131,7 +148,15 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
     request.pixelBudget = pixelBudget;
     request.textureBudget = budget;
     request.available = [&](const BrickKey& key) {
-        return slots.slotOf.count(key) != 0 || paged.available(key);
+        if (slots.slotOf.count(key)) return true;
+        if (!paged.available(key)) return false;
+        const std::uint64_t bytes = textureBytesOf(layout, key, texelBytes);
+        if (uploading > 0 && uploading + bytes > allowance) {
+            heldBack = true;
+            return false;
+        }
+        uploading += bytes;
+        return true;
     };
     request.bytes = [&](const BrickKey& key) { return textureBytesOf(layout, key, texelBytes); };
     if (volume.boxClip && !volume.boxClip->model && volume.boxClip->outsideOpacity <= 0.0) {
@@ -190,7 +215,7 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
     stats.coarserBricks = chosen.coarser;
     stats.budgetLimited = chosen.budgetLimited;
     stats.wanted = int(chosen.wanted.size());
-    stats.converged = chosen.converged() && drawnKeys.size() == chosen.drawn.size();
+    stats.converged = chosen.converged() && !heldBack && drawnKeys.size() == chosen.drawn.size();
     const BrickCacheStats host = paged.cache().stats();
     stats.hostBytes = paged.hostBytes();
     stats.hostBudget = paged.options().hostBudget;
