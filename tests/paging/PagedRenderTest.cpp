@@ -43,7 +43,7 @@ TEST_CASE_FIXTURE(GlFixture,
     PagedVolumeOptions options;
     options.standInBytes = 16 * 16 * 16; // level 2 kept whole: levels 0 and 1 page
     options.chunkCacheBytes = 16 * 16 * 16 * 4;
-    options.hostBudget = 120 * 1024; // some 20 bricks of level 0 (18^3): evictions happen
+    options.hostBudget = 120 * 1024; // some 25 bricks of level 0 (16^3): evictions happen
     options.loaderThreads = 2;
     auto paged = std::make_shared<PagedVolume>(folder, options);
     REQUIRE(paged->standInLevel() == 2);
@@ -56,8 +56,10 @@ TEST_CASE_FIXTURE(GlFixture,
     node->description.paged = paged;
     node->settings.numPlanes = 160;
     node->settings.lodPixels = 0.25; // level 0 everywhere at this size
-    // All 64 bricks of level 0 and their 8 + 1 ancestors (kept as fallbacks), as R16 texels.
-    node->settings.textureBudget = 73 * 18 * 18 * 18 * 2;
+    // Bricks of 14 cells (16^3 texels with the guards): all 125 of level 0 and their 27 + 8
+    // ancestors (kept as fallbacks), as R16 texels.
+    REQUIRE(paged->layout().brickCells() == 14);
+    node->settings.textureBudget = (125 + 27 + 8) * 16 * 16 * 16 * 2;
     root->addChild(node);
     const int size = 96;
     RenderOptions render;
@@ -73,12 +75,16 @@ TEST_CASE_FIXTURE(GlFixture,
     int frames = 1;
     for (; frames < 400 && !node->stats.paging.converged; ++frames) {
         paged->cache().waitIdle(50);
+        render.interactive = frames % 3 == 1; // interactive frames refine too, never waiting
         last = renderer.render(*root, render);
         const PagingStats& s = node->stats.paging;
+        CHECK(s.bricksDrawn > 0); // at least the roots, whatever the upload allowance left
         CHECK(s.hostBytes <= s.hostBudget);
         CHECK(s.textureBytes <= s.textureBudget);
         if (s.hostBytes > s.hostBudget || s.textureBytes > s.textureBudget) break;
     }
+    render.interactive = false;
+    last = renderer.render(*root, render);
     REQUIRE(node->stats.paging.converged);
     CHECK(node->stats.paging.finestLevel == 0);
     CHECK(node->stats.paging.coarsestLevel == 0);

@@ -9,10 +9,13 @@ namespace volsg {
 
 namespace {
 
-/// The bricks' edge: level 0's chunk edge (a brick then covers whole chunks).
+/// The bricks' edge: level 0's chunk edge less the two guard voxels, so that a texture is
+/// the chunk's size (64^3 for chunks of 64): llvmpipe pads each texture row to 64 bytes, and a
+/// 66-texel R16 row would take 192 bytes for 132 (the memory budget would be a fiction). A
+/// brick then reads up to 8 chunks; the chunk cache shares them with its neighbours.
 int brickCellsOf(const PyramidSource& source) {
     const glm::ivec3 chunk = source.level(0).chunk;
-    return std::clamp(std::max({chunk.x, chunk.y, chunk.z}), 16, 256);
+    return std::clamp(std::max({chunk.x, chunk.y, chunk.z}) - 2, 14, 254);
 }
 
 PagedLayout layoutOf(const PyramidSource& source) {

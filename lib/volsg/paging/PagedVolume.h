@@ -28,8 +28,8 @@ struct PagedVolumeOptions {
 
 /// A pyramid opened for paging. The levels from the stand-in up are read whole when it opens
 /// (the first image never waits for more); finer bricks load on the cache's threads when a
-/// frame wants them. Brick edge: level 0's chunk edge (largest axis), so a brick reads the
-/// chunks it covers plus a guard voxel of its neighbours (kept in the chunk cache).
+/// frame wants them. Brick edge: level 0's chunk edge (largest axis) less 2, so that a brick's
+/// texture with its guard voxels is the size of a chunk.
 class PagedVolume {
 public:
     /// Opens `path` (PyramidSource's errors); an Error when the budget cannot hold the levels

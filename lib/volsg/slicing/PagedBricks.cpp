@@ -147,9 +147,11 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
     LodRequest request;
     request.pixelBudget = pixelBudget;
     request.textureBudget = budget;
+    const int rootLevel = layout.levelCount() - 1;
     request.available = [&](const BrickKey& key) {
         if (slots.slotOf.count(key)) return true;
         if (!paged.available(key)) return false;
+        if (key.level == rootLevel) return true; // the roots are drawn whatever it costs
         const std::uint64_t bytes = textureBytesOf(layout, key, texelBytes);
         if (uploading > 0 && uploading + bytes > allowance) {
             heldBack = true;

@@ -1,5 +1,6 @@
 #include <volsg/nodes/VolumeData.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -105,6 +106,9 @@ std::shared_ptr<PagedVolume> openPaged(const VolumeData& node, const std::string
     if (!isZarrFolder(path)) return nullptr;
     PagedVolumeOptions options;
     options.hostBudget = std::uint64_t(node.memoryBudget()) << 20;
+    // A small budget keeps a smaller stand-in and chunk cache, leaving most of it to bricks.
+    options.standInBytes = std::min(options.standInBytes, options.hostBudget / 16);
+    options.chunkCacheBytes = std::min(options.chunkCacheBytes, options.hostBudget / 8);
     if (node.paging() == VolumeData::AUTO) {
         const PyramidSource source(path, 0);
         const glm::ivec3 d = source.level(0).dimensions;

@@ -70,7 +70,8 @@ public:
     /// The label volume, or null without tagFileName (or a generator without labels).
     virtual ref_ptr<const VolumeGrid> tagGrid() const;
     /// The pyramid this volume is paged from, or null when it is in memory whole. When paged,
-    /// grid() is the stand-in: the finest level of at most 16 MiB, whole, with level 0's box
+    /// grid() is the stand-in: the finest level of at most 16 MiB (and 1/16 of memoryBudget),
+    /// whole, with level 0's box
     /// (PagedVolume::standIn), which whatever needs a whole grid uses (histogram, picking,
     /// the reference ray caster, shear-warp, slices); the Volume node draws every level.
     std::shared_ptr<PagedVolume> pagedVolume() const;
