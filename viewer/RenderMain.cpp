@@ -143,6 +143,8 @@ int run(volsg::cli::Arguments& args) {
             ++frames;
         }
         const bool converged = !volsg::cli::volumesRefining(*root);
+        for (const std::string& line : volsg::cli::pagingErrors(*root))
+            std::fprintf(stderr, "volsg-render: %s\n", line.c_str());
         std::fprintf(stderr, "volsg-render: %s after %d frames and %.2f s of loading bricks\n",
                      converged ? "the paged volume converged" : "gave up waiting for bricks",
                      frames, seconds());

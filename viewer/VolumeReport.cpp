@@ -104,6 +104,18 @@ bool volumesRefining(Node& root) {
     return refining;
 }
 
+std::vector<std::string> pagingErrors(Node& root) {
+    std::vector<std::string> out;
+    forEachVolume(root, [&](Node& n) {
+        if (!n.isA<Volume>()) return;
+        const PagingStats& p = static_cast<const Volume&>(n).slicingStats().paging;
+        if (p.paged && !p.firstError.empty())
+            out.push_back(std::to_string(p.loadFailures) +
+                          " bricks unreadable, drawn coarser: " + p.firstError);
+    });
+    return out;
+}
+
 std::vector<double> predictedErrors(Node& root) {
     std::vector<double> out;
     forEachVolume(root, [&](Node& n) {

@@ -17,6 +17,9 @@ std::vector<std::string> volumeQualityLines(Node& root);
 /// the next frame will show more.
 bool volumesRefining(Node& root);
 
+/// The first brick read error of each paged Volume that had one (its bricks stay coarse).
+std::vector<std::string> pagingErrors(Node& root);
+
 /// The predicted RMSE (0..1 units) of every Volume and ShearWarpVolume under `root` that
 /// predicts one, in the same order as volumeQualityLines (-1 where none is predicted).
 std::vector<double> predictedErrors(Node& root);

@@ -5,6 +5,7 @@
 #include "support/TempDir.h"
 
 #include <chrono>
+#include <fstream>
 #include <thread>
 
 #include <volsg/core/Error.h>
@@ -110,6 +111,40 @@ TEST_CASE_FIXTURE(GlFixture,
     CHECK(converged.rmse < 0.1 * k8Bit);
     CHECK(converged.max < 1.0 * k8Bit);
     CHECK(coarse.rmse > 4.0 * converged.rmse); // the first frame was coarse indeed
+}
+
+TEST_CASE_FIXTURE(GlFixture, "an unreadable chunk leaves its bricks coarse, says where, and "
+                             "the frame still converges") {
+    const TempDir dir("volsg-paged");
+    const std::string folder = writeTestPyramid(dir);
+    {
+        std::ofstream corrupt(folder + "/0/1/1/1", std::ios::binary | std::ios::trunc);
+        corrupt << "not a zstd frame";
+    }
+    PagedVolumeOptions options;
+    options.standInBytes = 16 * 16 * 16;
+    options.chunkCacheBytes = 16 * 16 * 16 * 4;
+    options.hostBudget = 1 << 20;
+    auto paged = std::make_shared<PagedVolume>(folder, options);
+    auto root = Separator::create();
+    auto node = GridVolume::create();
+    node->description = volumeOf(paged->standIn(), testFunction());
+    node->description.paged = paged;
+    node->settings.lodPixels = 0.25;
+    root->addChild(node);
+    RenderOptions render;
+    render.width = render.height = 64;
+    render.camera = framing(*paged->standIn(), {1.0f, 0.4f, 0.7f});
+    int frames = 0;
+    do {
+        paged->cache().waitIdle(50);
+        renderer.render(*root, render);
+    } while (!node->stats.paging.converged && ++frames < 200);
+    CHECK(node->stats.paging.converged);
+    CHECK(node->stats.paging.loadFailures > 0);
+    CHECK(node->stats.paging.coarsestLevel >= 1); // the bricks of the bad chunk: their parents
+    CHECK(node->stats.paging.firstError.find("0/1/1/1") != std::string::npos);
+    CHECK(node->stats.paging.firstError.find("zstd") != std::string::npos);
 }
 
 TEST_CASE("VolumeData pages an OME-Zarr pyramid when asked or when level 0 exceeds its budget") {

@@ -53,6 +53,9 @@ public:
     std::shared_ptr<const HostBrick> find(const BrickKey& key);
     /// Whether find() would answer (without marking anything used).
     bool available(const BrickKey& key) const;
+    /// Whether the brick could not be read (BrickCache::errors() says why): never wanted
+    /// again, its parent stands in for it.
+    bool failed(const BrickKey& key) const { return cache_->failed(key); }
     /// Asks the loaders for these bricks, most urgent first (levels kept whole are left out),
     /// as many as fill half the cache's budget: the caller takes them to the GPU and asks for
     /// the next ones in a later frame.

@@ -166,7 +166,10 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
         request.regionMin = glm::min(b.origin, b.origin + b.extent);
         request.regionMax = glm::max(b.origin, b.origin + b.extent);
     }
-    const LodSelection chosen = selectBricks(layout, view, request);
+    LodSelection chosen = selectBricks(layout, view, request);
+    // A brick that could not be read stays coarse (its parent drawn) and is wanted no more:
+    // the frame converges without it, and the error is reported.
+    std::erase_if(chosen.wanted, [&](const BrickKey& key) { return paged.failed(key); });
     paged.request(chosen.wanted); // never waited for: the next frames draw what arrived
 
     // Textures for the chosen bricks, evicting those this frame does not draw.
