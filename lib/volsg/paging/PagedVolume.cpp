@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cstring>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <volsg/core/Error.h>
 
 namespace volsg {
@@ -44,6 +48,14 @@ HostBrick cutBrick(const VolumeGrid& level, glm::ivec3 first, glm::ivec3 count) 
 
 PagedVolume::PagedVolume(const std::string& path, const PagedVolumeOptions& options)
     : options_(options), source_(path, options.chunkCacheBytes), layout_(layoutOf(source_)) {
+#if defined(__GLIBC__)
+    // Bricks and chunks (64^3 voxels: 256 KiB and more) are made on the loader threads and
+    // freed on others, for ever. glibc raises its mmap threshold after the first such free,
+    // and from then on serves them from per-thread arenas, which keep the high-water mark of
+    // every thread resident: the 2048^3 run held 460 MiB beyond its budgets that way. A fixed
+    // threshold gives each large buffer its own mapping, returned to the system when freed.
+    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+#endif
     const std::size_t size = voxelTypeSize(source_.type());
     auto levelBytes = [&](int l) {
         const glm::ivec3 d = source_.level(l).dimensions;
