@@ -139,8 +139,12 @@ TEST_CASE_FIXTURE(GlFixture, "an unreadable chunk leaves its bricks coarse, says
     do {
         paged->cache().waitIdle(50);
         renderer.render(*root, render);
-    } while (!node->stats.paging.converged && ++frames < 200);
-    CHECK(node->stats.paging.converged);
+    } while (!node->stats.paging.converged && ++frames < 400);
+    const PagingStats& s = node->stats.paging;
+    CHECK_MESSAGE(s.converged, "after " << frames << " frames: " << s.wanted << " wanted, "
+                                        << s.queued << " queued, " << s.loading << " loading, "
+                                        << s.loadFailures << " failed, levels " << s.finestLevel
+                                        << ".." << s.coarsestLevel);
     CHECK(node->stats.paging.loadFailures > 0);
     CHECK(node->stats.paging.coarsestLevel >= 1); // the bricks of the bad chunk: their parents
     CHECK(node->stats.paging.firstError.find("0/1/1/1") != std::string::npos);

@@ -125,7 +125,8 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
     const std::set<std::size_t> lastDrawn(slots.lastDrawn.begin(), slots.lastDrawn.end());
     for (const BrickKey& key : slots.wanted) {
         if (slots.slotOf.count(key)) continue;
-        if (uploading + textureBytesOf(layout, key, texelBytes) > allowance) {
+        // Half the allowance at most: the rest is the choice's, which may need a fallback.
+        if (uploading + textureBytesOf(layout, key, texelBytes) > allowance / 2) {
             heldBack = true;
             break;
         }
