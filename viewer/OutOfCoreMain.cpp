@@ -182,14 +182,14 @@ ref_ptr<PerspectiveCamera> orbitCamera(int step, int steps, glm::dvec3 target, d
     return cameraAt(eye, target, range);
 }
 
-/// Renders still frames until every paged volume has converged (or 10 minutes pass).
+/// Renders still frames until every paged volume has converged (or 5 minutes pass).
 Image converge(Renderer& renderer, Node& root, RenderOptions options, int& frames,
                double& milliseconds) {
     options.interactive = false;
     const auto started = Clock::now();
     Image image = renderer.render(root, options);
     frames = 1;
-    while (cli::volumesRefining(root) && millisecondsSince(started) < 600000.0) {
+    while (cli::volumesRefining(root) && millisecondsSince(started) < 300000.0) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
         image = renderer.render(root, options);
         ++frames;

@@ -30,8 +30,7 @@ struct PagedSlots {
     std::vector<BrickKey> keyOf;
     std::vector<Brick> bricks; ///< per slot: its region and texels (BrickLayout::fromBricks)
     std::vector<std::size_t> freeSlots;
-    std::vector<BrickKey> wanted;       ///< the last frame's missing bricks
-    std::vector<std::size_t> lastDrawn; ///< the last frame's slots
+    std::vector<BrickKey> wanted; ///< the last frame's missing bricks
     std::uint64_t uploads = 0, evictions = 0;
 };
 
