@@ -161,10 +161,21 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
         return true;
     };
     request.bytes = [&](const BrickKey& key) { return textureBytesOf(layout, key, texelBytes); };
-    if (volume.boxClip && !volume.boxClip->model && volume.boxClip->outsideOpacity <= 0.0) {
+    if (volume.boxClip && volume.boxClip->outsideOpacity <= 0.0) {
+        // The BoxClip's box in local coordinates (its corners through its own model, as the
+        // shader's uLocalToBox maps them), bounded by an axis-aligned box.
         const RayCastBoxClip& b = *volume.boxClip;
-        request.regionMin = glm::min(b.origin, b.origin + b.extent);
-        request.regionMax = glm::max(b.origin, b.origin + b.extent);
+        const glm::dmat4 boxToLocal =
+            b.model ? glm::inverse(volume.model) * *b.model : glm::dmat4(1.0);
+        request.regionMin = glm::dvec3(std::numeric_limits<double>::infinity());
+        request.regionMax = -request.regionMin;
+        for (int c = 0; c < 8; ++c) {
+            const glm::dvec3 corner =
+                b.origin + b.extent * glm::dvec3(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+            const glm::dvec3 p = glm::dvec3(boxToLocal * glm::dvec4(corner, 1.0));
+            request.regionMin = glm::min(request.regionMin, p);
+            request.regionMax = glm::max(request.regionMax, p);
+        }
     }
     LodSelection chosen = selectBricks(layout, view, request);
     // A brick that could not be read stays coarse (its parent drawn) and is wanted no more:
