@@ -47,7 +47,13 @@ bool evictOne(PagedSlots& slots, VolumeTextures& v, const std::set<std::size_t>&
             (victim == v.bricks.size() || v.bricks[i].lastUse < v.bricks[victim].lastUse))
             victim = i;
     if (victim == v.bricks.size()) return false;
-    release(v, victim);
+    // Not release(): v.layout is last frame's, and the slot may have been refilled with a
+    // brick of another size since (an edge brick): its bytes are those of the brick it holds.
+    BrickState& s = v.bricks[victim];
+    v.residentBytes -= slots.bricks[victim].texels() * v.format.texelBytes;
+    s.data = Texture();
+    s.tags = Texture();
+    s.resident = false;
     slots.slotOf.erase(slots.keyOf[victim]);
     slots.freeSlots.push_back(victim);
     ++slots.evictions;
