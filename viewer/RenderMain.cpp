@@ -1,8 +1,10 @@
 // volsg-render: renders a scene file (or any data file volsg opens, in the scene built for it)
 // headless to PNG or PFM, or writes it back as a scene file.
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <thread>
 
 #include "CommandLine.h"
 #include "TerminalProgress.h"
@@ -23,6 +25,9 @@
 #endif
 
 namespace {
+
+/// How long a still image waits for a paged volume's bricks.
+constexpr double kMaxPagingWaitSeconds = 600.0;
 
 const char* usage =
     "usage: volsg-render FILE -o OUT.png|OUT.pfm|OUT.iv [--size WxH] [--backend osmesa|egl]\n"
@@ -177,7 +182,29 @@ int run(volsg::cli::Arguments& args) {
 #endif
     if (mpiTiming || mpiComposite != "reduce")
         throw volsg::Error("--mpi-timing and --mpi-composite apply to a run under mpirun");
-    const volsg::Image image = volsg::renderStereo(renderer, *root, options, stereo);
+    volsg::Image image = volsg::renderStereo(renderer, *root, options, stereo);
+    // A paged volume draws what is loaded and asks for the rest: a still image is rendered
+    // again as bricks arrive until nothing more is wanted (this tool is not interactive).
+    if (volsg::cli::volumesRefining(*root)) {
+        const auto started = std::chrono::steady_clock::now();
+        int frames = 1;
+        auto seconds = [&] {
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - started)
+                .count();
+        };
+        while (volsg::cli::volumesRefining(*root) && seconds() < kMaxPagingWaitSeconds) {
+            progress.stage(0.5, "loading bricks of the paged volume");
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            image = volsg::renderStereo(renderer, *root, options, stereo);
+            ++frames;
+        }
+        const bool converged = !volsg::cli::volumesRefining(*root);
+        for (const std::string& line : volsg::cli::pagingErrors(*root))
+            std::fprintf(stderr, "volsg-render: %s\n", line.c_str());
+        std::fprintf(stderr, "volsg-render: %s after %d frames and %.2f s of loading bricks\n",
+                     converged ? "the paged volume converged" : "gave up waiting for bricks",
+                     frames, seconds());
+    }
     progress.stage(0.95, "writing " + output);
     volsg::writeImage(output, image);
     if (verbose)

@@ -1,6 +1,7 @@
 #include "VolumeReport.h"
 
 #include <cstdio>
+#include <string>
 
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Volume.h>
@@ -14,6 +15,34 @@ template <class Visit> void forEachVolume(Node& node, Visit&& visit) {
     if (auto* children = node.children())
         for (const auto& child : *children)
             if (child) forEachVolume(*child, visit);
+}
+
+double mebibytes(std::uint64_t bytes) {
+    return double(bytes) / double(1 << 20);
+}
+
+/// A paged volume's level of detail (the error the quadrature prediction leaves out),
+/// residency and I/O.
+std::string describePaging(const PagingStats& p) {
+    char line[480];
+    std::snprintf(line, sizeof line,
+                  "paged: %s, %d bricks of levels %d..%d (of %d), voxels up to %.2f px (budget "
+                  "%.2f px)%s%s; host %.0f/%.0f MiB (%d bricks), textures %.0f/%.0f MiB (%d); "
+                  "loading %d, queued %d; loaded %llu bricks, %.0f MiB in %.0f ms",
+                  p.converged ? "converged" : "refining", p.bricksDrawn, p.finestLevel,
+                  p.coarsestLevel, p.levels, p.worstVoxelPixels, p.pixelBudget,
+                  p.coarserBricks > 0
+                      ? (", " + std::to_string(p.coarserBricks) + " coarser than that").c_str()
+                      : "",
+                  p.budgetLimited ? " (texture budget)" : "", mebibytes(p.hostBytes),
+                  mebibytes(p.hostBudget), p.hostBricks, mebibytes(p.textureBytes),
+                  mebibytes(p.textureBudget), p.textureBricks, p.loading, p.queued,
+                  static_cast<unsigned long long>(p.bricksLoaded), mebibytes(p.bytesLoaded),
+                  p.loadMilliseconds);
+    std::string out = line;
+    if (!p.firstError.empty())
+        out += "; " + std::to_string(p.loadFailures) + " bricks unreadable: " + p.firstError;
+    return out;
 }
 
 std::string describe(const Volume& v) {
@@ -31,8 +60,11 @@ std::string describe(const Volume& v) {
                       s.meetsTarget ? "" : ", not met", s.coverage * 100.0, s.qualityMilliseconds);
         out += line;
     } else {
-        out += ", no prediction (no target, AVERAGE or NEAREST)";
+        out += s.paging.paged ? ", no prediction (paged: 2 planes per voxel of the finest level "
+                                "drawn)"
+                              : ", no prediction (no target, AVERAGE or NEAREST)";
     }
+    if (s.paging.paged) out += "; " + describePaging(s.paging);
     return out;
 }
 
@@ -58,6 +90,28 @@ std::vector<std::string> volumeQualityLines(Node& root) {
                                                  : describe(static_cast<const ShearWarpVolume&>(n));
         out.push_back(std::string(n.isA<Volume>() ? "Volume" : "ShearWarpVolume") + " #" +
                       std::to_string(index) + name + ": " + what);
+    });
+    return out;
+}
+
+bool volumesRefining(Node& root) {
+    bool refining = false;
+    forEachVolume(root, [&](Node& n) {
+        if (!n.isA<Volume>()) return;
+        const PagingStats& p = static_cast<const Volume&>(n).slicingStats().paging;
+        refining = refining || (p.paged && !p.converged);
+    });
+    return refining;
+}
+
+std::vector<std::string> pagingErrors(Node& root) {
+    std::vector<std::string> out;
+    forEachVolume(root, [&](Node& n) {
+        if (!n.isA<Volume>()) return;
+        const PagingStats& p = static_cast<const Volume&>(n).slicingStats().paging;
+        if (p.paged && !p.firstError.empty())
+            out.push_back(std::to_string(p.loadFailures) +
+                          " bricks unreadable, drawn coarser: " + p.firstError);
     });
     return out;
 }

@@ -13,6 +13,13 @@ namespace volsg::cli {
 /// for every Volume and ShearWarpVolume under `root`, in traversal order.
 std::vector<std::string> volumeQualityLines(Node& root);
 
+/// Whether a paged Volume's last frame still waited for bricks (PagingStats::converged false):
+/// the next frame will show more.
+bool volumesRefining(Node& root);
+
+/// The first brick read error of each paged Volume that had one (its bricks stay coarse).
+std::vector<std::string> pagingErrors(Node& root);
+
 /// The predicted RMSE (0..1 units) of every Volume and ShearWarpVolume under `root` that
 /// predicts one, in the same order as volumeQualityLines (-1 where none is predicted).
 std::vector<double> predictedErrors(Node& root);

@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include "Viewer.h"
+#include "VolumeReport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -1148,7 +1149,8 @@ void Viewer::frame() {
         try {
             renderViews();
             // Only a full still image is kept (a coarse or interactive one is redrawn).
-            if (refineStage_ >= 1 && !isInteracting()) {
+            // A paged volume still loading bricks draws again as they arrive (volsg-view README).
+            if (refineStage_ >= 1 && !isInteracting() && !cli::volumesRefining(*root_)) {
                 keepViews();
                 lastShown_ = signature;
             }

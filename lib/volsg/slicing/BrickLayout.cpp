@@ -91,6 +91,20 @@ BrickLayout::BrickLayout(glm::ivec3 dimensions, glm::dvec3 spacing, const Limits
             }
 }
 
+BrickLayout BrickLayout::fromBricks(std::vector<Brick> bricks, glm::ivec3 dimensions,
+                                    glm::dvec3 spacing, std::size_t bytesPerVoxel) {
+    BrickLayout layout;
+    layout.dims_ = dimensions;
+    layout.spacing_ = spacing;
+    layout.grid_ = glm::ivec3(0);
+    layout.bytesPerVoxel_ = bytesPerVoxel;
+    for (const Brick& b : bricks)
+        layout.largest_ = glm::max(layout.largest_, b.voxelCount);
+    layout.bricks_ = std::move(bricks);
+    layout.explicit_ = true;
+    return layout;
+}
+
 void BrickLayout::backToFront(const glm::dvec3& eyeOrDirection, bool orthographic,
                               std::vector<int>& order) const {
     const glm::dvec3 halfExtent = 0.5 * glm::dvec3(dims_) * spacing_;

@@ -17,6 +17,10 @@ struct Brick {
     glm::ivec3 voxelCount{1}; ///< texture size in texels
     glm::dvec3 boxMin{0.0};   ///< the region it draws, in the volume's local coordinates
     glm::dvec3 boxMax{0.0};
+    /// A paged volume's brick (PagedBricks.h): its level's voxel size and dimensions, which
+    /// map the volume box to that level's voxels; 0: the volume's own.
+    glm::dvec3 levelSpacing{0.0};
+    glm::ivec3 levelDimensions{0};
     std::size_t texels() const {
         return std::size_t(voxelCount.x) * std::size_t(voxelCount.y) * std::size_t(voxelCount.z);
     }
@@ -47,6 +51,11 @@ public:
 
     BrickLayout() = default;
     BrickLayout(glm::ivec3 dimensions, glm::dvec3 spacing, const Limits& limits);
+    /// Bricks chosen elsewhere (a paged volume's, PagedBricks.h), drawn in the order the
+    /// chooser gives (explicitBricks()): backToFront() is not theirs to decide.
+    static BrickLayout fromBricks(std::vector<Brick> bricks, glm::ivec3 dimensions,
+                                  glm::dvec3 spacing, std::size_t bytesPerVoxel);
+    bool explicitBricks() const { return explicit_; }
 
     const std::vector<Brick>& bricks() const { return bricks_; }
     glm::ivec3 grid() const { return grid_; }              ///< bricks along x, y, z
@@ -74,6 +83,7 @@ private:
     glm::ivec3 largest_{1};
     std::size_t bytesPerVoxel_ = 1;
     bool fitsBudget_ = true;
+    bool explicit_ = false;
     std::vector<Brick> bricks_;
     mutable std::vector<std::pair<int, int>> sortScratch_;
 };

@@ -191,6 +191,10 @@ void drawBrick(const BrickState& s, const Brick& b, const Program& program, cons
     const glm::dvec3 half = plan.local.halfExtent;
     program.set("uSlabMin", glm::vec3(plan.slabsEndAtBricks ? b.boxMin : -half));
     program.set("uSlabMax", glm::vec3(plan.slabsEndAtBricks ? b.boxMax : half));
+    if (b.levelSpacing.x > 0.0) { // a paged brick: its level's voxels
+        program.set("uInvSpacing", glm::vec3(1.0 / b.levelSpacing));
+        program.set("uVoxelCount", glm::vec3(b.levelDimensions));
+    }
     if (s.rows.empty()) {
         setOwnBox(program, b.boxMin, b.boxMax, plan);
         glDrawArrays(GL_TRIANGLES, s.first, s.count);

@@ -95,17 +95,22 @@ void cutSlices(VolumeTextures& v, const Brick& b, BrickState& s, const VolumeGri
 }
 
 /// The faces of brick b that face the viewer (at `viewer`, or looking along it when
-/// orthographic; local coordinates), as triangles: those on the volume box, and with
-/// `seamsToo` (SlicePlan::slabsEndAtBricks) those between bricks. They stand for the rays no
-/// plane crosses within the box (or the brick). Sort-last: b is the part of brick `whole` in
-/// this process's part; the faces the part cuts through are not the brick's.
-void appendFrontFaces(const Brick& b, const Brick& whole, const glm::ivec3& grid, bool seamsToo,
-                      const glm::dvec3& viewer, bool orthographic, std::vector<glm::vec3>& out) {
+/// orthographic; local coordinates), as triangles: those on the volume box (a paged brick, of
+/// any level, where its region reaches the box's face), and with `seamsToo`
+/// (SlicePlan::slabsEndAtBricks) those between bricks. They stand for the rays no plane
+/// crosses within the box (or the brick). Sort-last: b is the part of brick `whole` in this
+/// process's part; the faces the part cuts through are not the brick's.
+void appendFrontFaces(const Brick& b, const Brick& whole, const glm::ivec3& grid,
+                      const glm::dvec3& halfExtent, bool seamsToo, const glm::dvec3& viewer,
+                      bool orthographic, std::vector<glm::vec3>& out) {
     for (int a = 0; a < 3; ++a)
         for (int side = 0; side < 2; ++side) {
             const bool wholeFace =
                 side == 0 ? b.boxMin[a] == whole.boxMin[a] : b.boxMax[a] == whole.boxMax[a];
-            const bool onBox = side == 0 ? b.index[a] == 0 : b.index[a] == grid[a] - 1;
+            const bool onBox =
+                b.levelSpacing.x > 0.0
+                    ? (side == 0 ? b.boxMin[a] <= -halfExtent[a] : b.boxMax[a] >= halfExtent[a])
+                    : (side == 0 ? b.index[a] == 0 : b.index[a] == grid[a] - 1);
             if (!wholeFace || !(onBox || seamsToo)) continue;
             const double c = side == 0 ? b.boxMin[a] : b.boxMax[a];
             const bool facing = orthographic ? (side == 0 ? viewer[a] > 0.0 : viewer[a] < 0.0)
@@ -131,8 +136,8 @@ void appendBoundingFaces(VolumeTextures& v, const Brick& b, const Brick& whole, 
                          const SlicePlan& plan) {
     const LocalView& local = plan.local;
     s.faceFirst = GLint(v.vertices.size());
-    appendFrontFaces(b, whole, v.layout.grid(), plan.slabsEndAtBricks, local.viewer,
-                     local.orthographic, v.vertices);
+    appendFrontFaces(b, whole, v.layout.grid(), local.halfExtent, plan.slabsEndAtBricks,
+                     local.viewer, local.orthographic, v.vertices);
     for (const glm::dvec4& plane : plan.clipPlanes) {
         const glm::dvec3 n(plane);
         const bool entering = local.orthographic ? glm::dot(n, local.viewer) > 0.0
@@ -241,7 +246,9 @@ RowPlan planRows(VolumeTextures& v, const SlicePlan& plan, const SlicingSettings
 
 void cutBricks(VolumeTextures& v, const VolumeGrid& grid, const SlicePlan& plan,
                SlicingStats& drawn) {
-    v.layout.backToFront(plan.local.viewer, plan.local.orthographic, v.order);
+    // A paged volume's bricks come ordered by their chooser (PagedBricks.h).
+    if (!v.layout.explicitBricks())
+        v.layout.backToFront(plan.local.viewer, plan.local.orthographic, v.order);
     drawn.cellRowGroup = plan.rows.group;
     v.vertices.clear();
     for (const int i : v.order) {

@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include <volsg/paging/PagingStats.h>
+
 namespace volsg {
 
 /// Counters of one volume's slicing renderer. The "last frame" values are overwritten by each
@@ -70,6 +72,9 @@ struct SlicingStats {
     std::uint64_t refilledTextures = 0;
     std::uint64_t transferTableBuilds = 0;  ///< transfer tables (and tag maps) baked and uploaded
     std::uint64_t preIntegrationBuilds = 0; ///< pre-integration tables baked and uploaded
+
+    /// A paged volume's level of detail, residency and I/O (paging.paged false otherwise).
+    PagingStats paging;
 };
 
 } // namespace volsg

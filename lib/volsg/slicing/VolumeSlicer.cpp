@@ -8,6 +8,7 @@
 #include <volsg/core/Error.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
+#include <volsg/slicing/PagedBricks.h>
 #include <volsg/slicing/SliceDraw.h>
 #include <volsg/slicing/SliceGeometry.h>
 #include <volsg/slicing/SlicePlan.h>
@@ -49,7 +50,8 @@ SliceMethod prepareVolume(VolumeTextures& v, const SliceShared& shared, TextureS
     // Lighting, pre-integration and tag-cell splitting sample up to a voxel (or half a slab)
     // beyond the point drawn: bricks then carry a guard voxel, so seams stay invisible.
     const bool sampleAround = m.lighting || settings.preIntegrated || volume.tags;
-    prepareLayout(v, shared, settings.textureBudget, sampleAround ? 1 : 0);
+    if (!volume.paged) // a paged volume's bricks are chosen per frame (PagedBricks.h)
+        prepareLayout(v, shared, settings.textureBudget, sampleAround ? 1 : 0);
     prepareTable(v, volume, volume.transferKey);
     m.tagged = v.tags && v.table.rows() > 1;
     staging.hasFrame = true; // a grid staged next is laid out as this one
@@ -63,8 +65,9 @@ SliceMethod prepareVolume(VolumeTextures& v, const SliceShared& shared, TextureS
     // where that is exact: DVR samples each part at one point (not pre-integrated, not split at
     // tag cells); MIP of one row (tags would let a skipped sample's row matter). MINIP and
     // AVERAGE see every sample.
-    m.skipCells = settings.skipEmptyCells && ((m.mode == kDvr && !m.tagged && !m.preIntegrated) ||
-                                              (m.mode == kMip && !m.tagged));
+    m.skipCells =
+        settings.skipEmptyCells && !volume.paged &&
+        ((m.mode == kDvr && !m.tagged && !m.preIntegrated) || (m.mode == kMip && !m.tagged));
     if (m.skipCells) prepareCells(v, m.mode == kMip ? 1 : 0);
     m.hasPlaneOpacity = m.mode == kDvr && planeOpacityMatters(volume.planeOpacity);
     if (m.hasPlaneOpacity) preparePlaneOpacity(v, volume.planeOpacity);
@@ -96,7 +99,9 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
                                  const SlicingSettings& settings, FrameQuality& quality) {
     const double target =
         frame.interactive ? settings.interactiveErrorTarget : settings.errorTarget;
-    if (!(target > 0.0) || volume.mode == VolumeRenderMode::AVERAGE || settings.nearest)
+    // A paged volume's planes follow its finest drawn level (preparePaged, PagedBricks.h).
+    if (!(target > 0.0) || volume.mode == VolumeRenderMode::AVERAGE || settings.nearest ||
+        volume.paged)
         return settings;
     // What the model leaves out (BoxClip, clip planes, planeOpacity, opaque geometry ending
     // rays, a near plane cutting the box: the camera inside) adds boundaries inside slabs and
@@ -224,11 +229,13 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     SlicePlan plan;
     plan.local = localView(frame.view, volume.model, *volume.data);
     FrameQuality quality;
-    const SlicingSettings chosen =
-        settingsForFrame(v, volume, plan.local, frame, settings, quality);
+    SlicingSettings chosen = settingsForFrame(v, volume, plan.local, frame, settings, quality);
     plan.method = prepareVolume(v, shared, staging, volume, chosen);
+    PagingStats paging;
+    if (volume.paged) paging = preparePaged(frame, owner, key, v, volume, plan.local, chosen);
     plan.layout = planeLayout(plan.local, chosen, plan.method.slabSamples, frame);
     SlicingStats drawn = layoutStats(v, plan, chosen, quality);
+    drawn.paging = paging;
     plan.clipPlanes = localClipPlanes(volume);
     plan.rows = planRows(v, plan, chosen);
     plan.slabsEndAtBricks = slabsEndAtBricks(

@@ -41,6 +41,9 @@ struct SlicingSettings {
     /// Plane spacing along the view in L0 (set by the slicer from the target): replaces the
     /// automatic plane count when numPlanes is 0; for this frame, interactive or not.
     double planeSpacingL0 = 0.0;
+    /// A paged volume (RayCastVolume::paged): a brick's level is fine enough when one of its
+    /// voxels projects to at most this many pixels (the Volume's lodPixels).
+    double lodPixels = 1.0;
     glm::vec3 specular{0.0f}; ///< lighting: the Material's specular colour
     float shininess = 0.2f;   ///< lighting: the Material's shininess (Inventor, 0..1)
 };

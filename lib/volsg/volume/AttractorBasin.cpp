@@ -48,10 +48,10 @@ template <class F> void parallelFor(std::size_t count, F&& work) {
 }
 
 /// A cubic float field, x fastest.
-struct Field {
+struct SampledField {
     int n;
     std::vector<float> v;
-    explicit Field(int side) : n(side), v(std::size_t(side) * side * side, 0.0f) {}
+    explicit SampledField(int side) : n(side), v(std::size_t(side) * side * side, 0.0f) {}
     std::size_t index(int i, int j, int k) const {
         return std::size_t(i) + std::size_t(n) * (std::size_t(j) + std::size_t(n) * std::size_t(k));
     }
@@ -60,7 +60,7 @@ struct Field {
 /// One box-filter pass of radius r along `axis` (0 = x, 1 = y, 2 = z), zero outside the
 /// volume, by running sums. Lines along the axis are taken in blocks of up to 256 neighbouring
 /// lines (contiguous in memory), so that the strided axes still stream memory in order.
-void boxBlurAxis(Field& f, int axis, int r) {
+void boxBlurAxis(SampledField& f, int axis, int r) {
     const std::size_t n = std::size_t(f.n), rr = std::size_t(r);
     const std::size_t stride = axis == 0 ? 1 : axis == 1 ? n : n * n;
     // Line starts: x lines start at every (j, k); y lines at (i, k); z lines at (i, j). The
@@ -99,7 +99,7 @@ void boxBlurAxis(Field& f, int axis, int r) {
 }
 
 /// Two box passes per axis: a separable tent filter of radius 2r, close enough to a Gaussian.
-void smooth(Field& f, int r) {
+void smooth(SampledField& f, int r) {
     if (r < 1) return;
     for (int pass = 0; pass < 2; ++pass)
         for (int axis = 0; axis < 3; ++axis)
@@ -142,7 +142,7 @@ AttractorBasinVolume makeAttractorBasin(int n) {
     const int basinRadius = std::max(1, int(std::lround(0.03 * n)));
     const double margin = std::max(0.09 * n, 2.0 * (attractorRadius + basinRadius) + 1.0);
     const glm::dvec3 scale = (double(n) - 2.0 * margin) / glm::max(hi - lo, glm::dvec3(1e-9));
-    Field density(n);
+    SampledField density(n);
     for (const glm::vec3& q : path) {
         const glm::dvec3 u = (glm::dvec3(q) - lo) * scale + margin;
         const glm::ivec3 c =
@@ -168,7 +168,7 @@ AttractorBasinVolume makeAttractorBasin(int n) {
     for (float d : density.v)
         maxDensity = std::max(maxDensity, d);
     const float logRange = std::log(maxDensity / attractorLevel);
-    Field basin(n); // the attractor's indicator, blurred wide below
+    SampledField basin(n); // the attractor's indicator, blurred wide below
     for (std::size_t v = 0; v < density.v.size(); ++v)
         if (density.v[v] >= attractorLevel) {
             tags[v] = AttractorBasinVolume::attractorTag;
@@ -177,7 +177,7 @@ AttractorBasinVolume makeAttractorBasin(int n) {
             data[v] = std::uint8_t(128 + std::lround(127.0f * std::clamp(t, 0.0f, 1.0f)));
             basin.v[v] = 1.0f;
         }
-    density = Field(1);
+    density = SampledField(1);
 
     // The basin region: the wide blur of the indicator above a level, plus the attractor and
     // its 6-neighbours (so the attractor is inside however thin it is somewhere).

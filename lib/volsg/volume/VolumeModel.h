@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -15,6 +16,8 @@
 #include <volsg/volume/VolumeGrid.h>
 
 namespace volsg {
+
+class PagedVolume; // lib/volsg/paging/PagedVolume.h
 
 enum class VolumeRenderMode { DVR, MIP, MINIP, AVERAGE };
 
@@ -57,6 +60,10 @@ struct VolumeInScope {
     std::uint64_t transferKey = 0;
     std::optional<RayCastBoxClip> boxClip;
     std::vector<glm::dvec4> clipPlanes;
+    /// A volume paged from its pyramid (VolumeData's paging): `data` is then its stand-in, a
+    /// coarse level whole with level 0's box, which the whole-grid consumers use; the slicer
+    /// draws bricks of every level from here.
+    std::shared_ptr<PagedVolume> paged;
 
     /// Half the volume box: it is centred on the local origin (VolumeGrid::extent()).
     glm::dvec3 halfExtent() const { return 0.5 * data->extent(); }

@@ -302,9 +302,10 @@ std::vector<glm::ivec3> pyramidLevelDimensions(glm::ivec3 dimensions, int chunk)
     return levels;
 }
 
-std::vector<PyramidLevel> writeOmeZarrPyramid(const VolumeGrid& grid, const std::string& folder,
-                                              const PyramidOptions& options,
-                                              const std::function<void(double)>& progress) {
+std::vector<PyramidLevel> writeOmeZarrPyramid(
+    glm::ivec3 dimensions, VoxelType type, glm::dvec3 spacing, const VolumeGeometry& geometry,
+    const std::function<void(int, std::vector<double>&)>& plane, const std::string& folder,
+    const PyramidOptions& options, const std::function<void(double)>& progress) {
     if (options.chunk < 1 || options.chunk > 4096)
         throw Error("chunk size must be 1..4096, got " + std::to_string(options.chunk));
     const fs::path root(folder);
@@ -315,19 +316,18 @@ std::vector<PyramidLevel> writeOmeZarrPyramid(const VolumeGrid& grid, const std:
     if (ec) throw Error("cannot create the folder: " + ec.message(), folder);
     writeText(root / ".zgroup", "{\n    \"zarr_format\": 2\n}\n");
 
-    const std::vector<glm::ivec3> dims = pyramidLevelDimensions(grid.dimensions(), options.chunk);
+    const std::vector<glm::ivec3> dims = pyramidLevelDimensions(dimensions, options.chunk);
     std::vector<std::unique_ptr<LevelWriter>> writers;
     std::vector<std::unique_ptr<PlaneReducer>> reducers(dims.size());
     for (std::size_t l = 0; l < dims.size(); ++l) {
         writers.push_back(
-            std::make_unique<LevelWriter>(root / std::to_string(l), dims[l], grid.type(), options));
+            std::make_unique<LevelWriter>(root / std::to_string(l), dims[l], type, options));
         writers[l]->summary.dimensions = dims[l];
         writers[l]->summary.spacing =
-            l == 0 ? grid.spacing()
-                   : writers[l - 1]->summary.spacing * glm::dvec3(halvingOf(dims[l - 1]));
+            l == 0 ? spacing : writers[l - 1]->summary.spacing * glm::dvec3(halvingOf(dims[l - 1]));
         if (l > 0)
             reducers[l] =
-                std::make_unique<PlaneReducer>(dims[l - 1], dims[l], grid.type(), options.labels);
+                std::make_unique<PlaneReducer>(dims[l - 1], dims[l], type, options.labels);
     }
 
     // A plane of level l goes into its array and on to the next level's reducer.
@@ -337,7 +337,8 @@ std::vector<PyramidLevel> writeOmeZarrPyramid(const VolumeGrid& grid, const std:
         if (l + 1 < dims.size() && reducers[l + 1]->add(planes[l], planes[l + 1])) push(l + 1);
     };
     for (int z = 0; z < dims[0].z; ++z) {
-        gridPlane(grid, z, planes[0]);
+        planes[0].resize(std::size_t(dims[0].x) * std::size_t(dims[0].y));
+        plane(z, planes[0]);
         push(0);
         if (progress) progress(double(z + 1) / dims[0].z);
     }
@@ -350,11 +351,20 @@ std::vector<PyramidLevel> writeOmeZarrPyramid(const VolumeGrid& grid, const std:
         levels.push_back(writer->summary);
     }
     // Last: an interrupted run leaves no image metadata that promises levels it lacks.
-    writeText(root / ".zattrs", multiscalesOf(fs::absolute(root).filename().string(), levels,
-                                              options, grid.geometry())
-                                        .dump(4) +
-                                    "\n");
+    writeText(
+        root / ".zattrs",
+        multiscalesOf(fs::absolute(root).filename().string(), levels, options, geometry).dump(4) +
+            "\n");
     return levels;
+}
+
+std::vector<PyramidLevel> writeOmeZarrPyramid(const VolumeGrid& grid, const std::string& folder,
+                                              const PyramidOptions& options,
+                                              const std::function<void(double)>& progress) {
+    return writeOmeZarrPyramid(
+        grid.dimensions(), grid.type(), grid.spacing(), grid.geometry(),
+        [&](int z, std::vector<double>& out) { gridPlane(grid, z, out); }, folder, options,
+        progress);
 }
 
 } // namespace volsg

@@ -50,4 +50,13 @@ std::vector<PyramidLevel> writeOmeZarrPyramid(const VolumeGrid& grid, const std:
                                               const PyramidOptions& options = {},
                                               const std::function<void(double)>& progress = {});
 
+/// The same from planes made on demand, for volumes generated or larger than memory:
+/// `plane(z, out)` fills `out` (dimensions.x * dimensions.y values, x fastest, as the type
+/// holds them) with plane z, called for z = 0, 1, ... in turn. Memory: as above, without the
+/// grid.
+std::vector<PyramidLevel> writeOmeZarrPyramid(
+    glm::ivec3 dimensions, VoxelType type, glm::dvec3 spacing, const VolumeGeometry& geometry,
+    const std::function<void(int, std::vector<double>&)>& plane, const std::string& folder,
+    const PyramidOptions& options = {}, const std::function<void(double)>& progress = {});
+
 } // namespace volsg

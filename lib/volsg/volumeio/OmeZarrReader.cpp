@@ -10,6 +10,7 @@
 
 #include <volsg/core/Error.h>
 #include <volsg/volumeio/InputFile.h>
+#include <volsg/volumeio/OmeZarrLevels.h>
 #include <volsg/volumeio/VoxelPayload.h>
 #include <volsg/volumeio/ZarrArray.h>
 #include <volsg/volumeio/ZarrJson.h>
@@ -20,14 +21,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-// Where one level's array is and how its voxels map to space, from the multiscales metadata.
-struct OmeZarrLevel {
-    std::string arrayFolder;
-    std::size_t axisCount = 3; ///< 0 when no metadata names the axes (a bare array)
-    glm::dvec3 spacing{1.0};   ///< x, y, z
-    VolumeGeometry geometry;   ///< from volsg's own metadata, when the writer kept it
-};
 
 class MultiscalesParser {
 public:
@@ -257,54 +250,11 @@ void checkChunkKeys(const std::string& arrayFolder, const ZarrArrayLayout& layou
     }
 }
 
-// One chunk's voxels in host byte order, or the fill value where the chunk file is missing.
-class ChunkLoader {
-public:
-    ChunkLoader(const std::string& zarrayPath, const ZarrArrayLayout& layout)
-        : zarrayPath_(zarrayPath), layout_(layout),
-          buffer_(std::size_t(layout.chunkElements()) * voxelTypeSize(layout.type)) {}
-
-    std::span<const std::byte> load(const std::vector<std::uint64_t>& index) {
-        // Inside the array's folder, as every data file a header names (io/ContainedFile.h).
-        const std::string path = InputFile::resolveBeside(zarrayPath_, layout_.chunkKey(index));
-        std::error_code ec;
-        if (!fs::exists(path, ec)) return fillChunk();
-        InputFile file(path);
-        if (file.size() > maxStoredChunkBytes(buffer_.size()))
-            file.fail("chunk file of " + std::to_string(file.size()) +
-                      " bytes is larger than any stored chunk of " +
-                      std::to_string(buffer_.size()) + " bytes can be");
-        stored_.resize(std::size_t(file.size()));
-        if (file.read(stored_.data(), stored_.size()) != stored_.size())
-            file.fail("file ended while reading the chunk");
-        decodeZarrChunk(layout_.codec, stored_, buffer_, path);
-        const std::size_t size = voxelTypeSize(layout_.type);
-        if (size > 1 && layout_.bigEndian != (std::endian::native == std::endian::big))
-            swapElementBytes(buffer_.data(), buffer_.size(), size);
-        return buffer_;
-    }
-
-private:
-    std::span<const std::byte> fillChunk() {
-        if (fill_.empty()) {
-            // One voxel of the fill value in host order, repeated.
-            auto one = VolumeGrid::create({1, 1, 1}, layout_.type);
-            one->setValue(0, layout_.fillValue);
-            const std::span<const std::byte> bytes = std::as_const(*one).bytes();
-            fill_.resize(buffer_.size());
-            for (std::size_t i = 0; i < fill_.size(); i += bytes.size())
-                std::memcpy(fill_.data() + i, bytes.data(), bytes.size());
-        }
-        return fill_;
-    }
-
-    std::string zarrayPath_;
-    const ZarrArrayLayout& layout_;
-    std::vector<std::byte> buffer_, stored_, fill_;
-};
+} // namespace
 
 // findLevel, with a JSON read the parsers' checks missed as the same one-line error.
-OmeZarrLevel findLevelChecked(const fs::path& folder, int level) {
+OmeZarrLevel findOmeZarrLevel(const std::string& path, int level) {
+    const fs::path folder = fs::path(path).lexically_normal();
     try {
         return findLevel(folder, level);
     } catch (const json::exception& e) {
@@ -312,7 +262,57 @@ OmeZarrLevel findLevelChecked(const fs::path& folder, int level) {
     }
 }
 
-} // namespace
+int omeZarrLevelCount(const std::string& path) {
+    const fs::path folder = fs::path(path).lexically_normal();
+    if (fs::exists(folder / ".zarray")) return 1;
+    const fs::path attrs = folder / ".zattrs";
+    if (!fs::exists(attrs))
+        throw Error("neither .zattrs nor .zarray: not an OME-Zarr image or Zarr array",
+                    folder.string());
+    try {
+        const json root = readZarrJson(attrs.string());
+        return int(MultiscalesParser(attrs.string(), root).levelCount());
+    } catch (const json::exception& e) {
+        throw Error(std::string("unexpected multiscales metadata: ") + e.what(), attrs.string());
+    }
+}
+
+ZarrChunkLoader::ZarrChunkLoader(const std::string& zarrayPath, const ZarrArrayLayout& layout)
+    : zarrayPath_(zarrayPath), layout_(layout),
+      buffer_(std::size_t(layout.chunkElements()) * voxelTypeSize(layout.type)) {}
+
+std::span<const std::byte> ZarrChunkLoader::load(const std::vector<std::uint64_t>& index) {
+    // Inside the array's folder, as every data file a header names (io/ContainedFile.h).
+    const std::string path = InputFile::resolveBeside(zarrayPath_, layout_.chunkKey(index));
+    std::error_code ec;
+    if (!fs::exists(path, ec)) return fillChunk();
+    InputFile file(path);
+    if (file.size() > maxStoredChunkBytes(buffer_.size()))
+        file.fail("chunk file of " + std::to_string(file.size()) +
+                  " bytes is larger than any stored chunk of " + std::to_string(buffer_.size()) +
+                  " bytes can be");
+    stored_.resize(std::size_t(file.size()));
+    if (file.read(stored_.data(), stored_.size()) != stored_.size())
+        file.fail("file ended while reading the chunk");
+    decodeZarrChunk(layout_.codec, stored_, buffer_, path);
+    const std::size_t size = voxelTypeSize(layout_.type);
+    if (size > 1 && layout_.bigEndian != (std::endian::native == std::endian::big))
+        swapElementBytes(buffer_.data(), buffer_.size(), size);
+    return buffer_;
+}
+
+std::span<const std::byte> ZarrChunkLoader::fillChunk() {
+    if (fill_.empty()) {
+        // One voxel of the fill value in host order, repeated.
+        auto one = VolumeGrid::create({1, 1, 1}, layout_.type);
+        one->setValue(0, layout_.fillValue);
+        const std::span<const std::byte> bytes = std::as_const(*one).bytes();
+        fill_.resize(buffer_.size());
+        for (std::size_t i = 0; i < fill_.size(); i += bytes.size())
+            std::memcpy(fill_.data() + i, bytes.data(), bytes.size());
+    }
+    return fill_;
+}
 
 bool isZarrFolder(const std::string& path) {
     std::error_code ec;
@@ -333,7 +333,7 @@ ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level, std::uint64_
         throw Error(std::string("cannot open OME-Zarr image: ") +
                         (fs::exists(path, ec) ? "not a folder" : "no such folder"),
                     path);
-    const OmeZarrLevel where = findLevelChecked(fs::path(path).lexically_normal(), level);
+    const OmeZarrLevel where = findOmeZarrLevel(path, level);
     const std::string zarrayPath = (fs::path(where.arrayFolder) / ".zarray").string();
     const ZarrArrayLayout layout = readZarrArrayLayout(where.arrayFolder, byteLimit);
     const std::size_t rank = layout.shape.size();
@@ -357,7 +357,7 @@ ref_ptr<VolumeGrid> readOmeZarr(const std::string& path, int level, std::uint64_
     const std::size_t size = voxelTypeSize(layout.type);
     const glm::ivec3 chunk(int(layout.chunks[rank - 1]), int(layout.chunks[rank - 2]),
                            int(layout.chunks[rank - 3]));
-    ChunkLoader loader(zarrayPath, layout);
+    ZarrChunkLoader loader(zarrayPath, layout);
     // Leading axes (t, c) stay at chunk 0: their first element is the volume read.
     std::vector<std::uint64_t> index(rank, 0);
     for (int cz = 0; cz * chunk.z < dims.z; ++cz)

@@ -45,6 +45,10 @@ public:
     /// (t, m): extinction multiplier over view depth, t = 0 nearest, 1 farthest box point.
     MFVec2f planeOpacity{this, "planeOpacity", {glm::vec2(0, 1), glm::vec2(1, 1)}};
     SFUInt32 textureBudget{this, "textureBudget", 0u}; ///< bytes; 0 = the driver's limit
+    /// A paged volume (VolumeData paging): a brick's level is fine enough when one of its
+    /// voxels projects to at most this many pixels; coarser bricks are drawn until finer ones
+    /// arrive (slicingStats().paging reports the difference). textureBudget 0: 512 MiB.
+    SFFloat lodPixels{this, "lodPixels", 1.0f};
 
     /// renderMode as the engines name it.
     VolumeRenderMode mode() const;

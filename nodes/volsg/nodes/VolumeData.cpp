@@ -1,5 +1,6 @@
 #include <volsg/nodes/VolumeData.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -8,6 +9,7 @@
 #include <volsg/actions/Action.h>
 #include <volsg/core/Error.h>
 #include <volsg/io/ReadContext.h>
+#include <volsg/paging/PagedVolume.h>
 #include <volsg/volume/AttractorBasin.h>
 #include <volsg/volume/TestVolumes.h>
 #include <volsg/volume/VolumeGrid.h>
@@ -28,6 +30,7 @@ const EnumValues VolumeData::generatorNames{{"NONE", NONE},
                                             {"RAMP16", RAMP16},
                                             {"LABELLED", LABELLED},
                                             {"ATTRACTOR_BASIN", ATTRACTOR_BASIN}};
+const EnumValues VolumeData::pagingNames{{"AUTO", AUTO}, {"ON", ON}, {"OFF", OFF}};
 
 namespace {
 
@@ -94,6 +97,28 @@ ref_ptr<VolumeGrid> readVolumeFile(const VolumeData& node, const std::string& pa
     return grid;
 }
 
+/// The pyramid to page the data from, when fileName is an OME-Zarr folder that paging asks to
+/// page (AUTO: level 0 larger than memoryBudget); else null.
+std::shared_ptr<PagedVolume> openPaged(const VolumeData& node, const std::string& directory) {
+    if (node.fileName().empty() || node.paging() == VolumeData::OFF || !node.tagFileName().empty())
+        return nullptr;
+    const std::string path = ReadContext{{}, directory}.resolve(node.fileName());
+    if (!isZarrFolder(path)) return nullptr;
+    PagedVolumeOptions options;
+    options.hostBudget = std::uint64_t(node.memoryBudget()) << 20;
+    // A small budget keeps a smaller stand-in and chunk cache, leaving most of it to bricks.
+    options.standInBytes = std::min(options.standInBytes, options.hostBudget / 16);
+    options.chunkCacheBytes = std::min(options.chunkCacheBytes, options.hostBudget / 8);
+    if (node.paging() == VolumeData::AUTO) {
+        const PyramidSource source(path, 0);
+        const glm::ivec3 d = source.level(0).dimensions;
+        const std::uint64_t bytes = std::uint64_t(d.x) * std::uint64_t(d.y) * std::uint64_t(d.z) *
+                                    voxelTypeSize(source.type());
+        if (bytes <= options.hostBudget) return nullptr;
+    }
+    return std::make_shared<PagedVolume>(path, options);
+}
+
 /// The data (and label) volumes named by fileName and tagFileName, relative names resolved
 /// against the scene file's folder.
 ref_ptr<VolumeGrid> loadFromFiles(const VolumeData& node, const std::string& directory,
@@ -122,6 +147,7 @@ void VolumeData::adoptLoaded(ref_ptr<const VolumeGrid> data, const std::string& 
     directory_ = directory;
     grid_ = std::move(data);
     tags_ = nullptr;
+    paged_ = nullptr;
     loadedVersion_ = version();
 }
 
@@ -157,6 +183,11 @@ ref_ptr<const VolumeGrid> VolumeData::grid() const {
     return grid_;
 }
 
+std::shared_ptr<PagedVolume> VolumeData::pagedVolume() const {
+    loadIfChanged();
+    return paged_;
+}
+
 ref_ptr<const VolumeGrid> VolumeData::tagGrid() const {
     loadIfChanged();
     return tags_;
@@ -166,6 +197,7 @@ void VolumeData::load() const {
     // Drop what was loaded before, so a failed reload never leaves stale data behind.
     grid_ = nullptr;
     tags_ = nullptr;
+    paged_ = nullptr;
     ref_ptr<VolumeGrid> data, tags;
     const glm::ivec3 dims = wholeDimensions(dimensions());
 
@@ -200,6 +232,14 @@ void VolumeData::load() const {
         break;
     }
     default:
+        if ((paged_ = openPaged(*this, directory_))) {
+            if (!spacing.isDefault())
+                throw Error("VolumeData: a paged volume takes its spacing from its pyramid; "
+                            "leave spacing unset or set paging OFF");
+            grid_ = paged_->standIn();
+            loadedVersion_ = version();
+            return;
+        }
         data = loadFromFiles(*this, directory_, dims, tags);
         break;
     }

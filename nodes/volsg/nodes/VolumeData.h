@@ -2,6 +2,7 @@
 // VolumeData: the voxels (and optional labels) that the Volume and ShearWarpVolume nodes after
 // it in scope render. Read from a file (docs/SCENE-FORMAT.md section 3) or generated (test
 // volumes).
+#include <memory>
 #include <string>
 
 #include <volsg/core/Node.h>
@@ -10,6 +11,8 @@
 #include <volsg/volume/VolumeGrid.h> // complete: the node holds ref_ptrs to grids
 
 namespace volsg {
+
+class PagedVolume; // lib/volsg/paging/PagedVolume.h
 
 class VolumeData : public Inherit<Node, VolumeData> {
 public:
@@ -32,7 +35,12 @@ public:
         LABELLED,
         ATTRACTOR_BASIN
     };
-    static const EnumValues dataTypeNames, tagDataTypeNames, byteOrderNames, generatorNames;
+    /// OME-Zarr pyramids (fileName a *.zarr folder): AUTO pages the volume from its pyramid
+    /// (out-of-core, lib/volsg/paging) when level 0 exceeds memoryBudget, ON always, OFF never
+    /// (level 0 is read whole, as for every other file).
+    enum Paging { AUTO, ON, OFF };
+    static const EnumValues dataTypeNames, tagDataTypeNames, byteOrderNames, generatorNames,
+        pagingNames;
 
     SFString fileName{this, "fileName", ""};
     SFVec3f dimensions{this, "dimensions", glm::vec3(0.0f)}; ///< raw files and generators
@@ -46,6 +54,10 @@ public:
     SFString tagFileName{this, "tagFileName", ""};
     SFEnum tagDataType{this, "tagDataType", tagDataTypeNames, UBYTE};
     SFEnum generator{this, "generator", generatorNames, NONE};
+    SFEnum paging{this, "paging", pagingNames, AUTO};
+    /// MiB of host memory a paged volume's voxels may take: bricks, decoded chunks and the
+    /// coarse levels kept whole (its GPU textures follow the Volume's textureBudget).
+    SFUInt32 memoryBudget{this, "memoryBudget", 1024u};
 
     /// The voxels, loaded on first use and again after a field changes (relative file names
     /// resolve against the folder of the scene file, see readDone). Throws Error naming the
@@ -57,6 +69,12 @@ public:
     virtual Box3 localBounds() const;
     /// The label volume, or null without tagFileName (or a generator without labels).
     virtual ref_ptr<const VolumeGrid> tagGrid() const;
+    /// The pyramid this volume is paged from, or null when it is in memory whole. When paged,
+    /// grid() is the stand-in: the finest level of at most 16 MiB (and 1/16 of memoryBudget),
+    /// whole, with level 0's box
+    /// (PagedVolume::standIn), which whatever needs a whole grid uses (histogram, picking,
+    /// the reference ray caster, shear-warp, slices); the Volume node draws every level.
+    std::shared_ptr<PagedVolume> pagedVolume() const;
 
     /// Takes `data`, read already from what the fields name, as this node's voxels (the scene
     /// built for a data file reads it once: volumescene/SceneForFile.h); `directory` is where
@@ -72,6 +90,7 @@ protected:
 private:
     std::string directory_; ///< of the scene file that named fileName
     mutable ref_ptr<const VolumeGrid> grid_, tags_;
+    mutable std::shared_ptr<PagedVolume> paged_;
     mutable std::uint64_t loadedVersion_ = 0;
     void load() const;
     void loadIfChanged() const; ///< load() once per version, errors said of this node

@@ -29,6 +29,7 @@ SlicingSettings slicingSettings(const Volume& volume, const State& state,
     settings.preIntegrated = volume.preIntegrated();
     settings.lighting = volume.lighting();
     settings.textureBudget = volume.textureBudget();
+    settings.lodPixels = volume.lodPixels() > 0.0f ? double(volume.lodPixels()) : 1.0;
     // Targets in 1/255; NaN and <= 0 mean none (the fixed rules), +infinity the cheapest.
     auto target = [](float t) { return t > 0.0f ? double(t) / 255.0 : 0.0; };
     settings.errorTarget = target(volume.errorTarget());

@@ -27,6 +27,7 @@ std::optional<VolumeInScope> gatherVolumeInScope(const State& state) {
     VolumeInScope out = gatherScopeWithoutData(state);
     out.data = std::move(data);
     out.tags = node->tagGrid();
+    out.paged = node->pagedVolume();
     return out;
 }
 

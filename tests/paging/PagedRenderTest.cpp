@@ -1,0 +1,178 @@
+// A volume paged from its pyramid: the first frame draws what is at hand, later frames refine
+// as bricks arrive, the converged image equals the in-memory render of level 0, and the host
+// and texture budgets hold at every frame.
+#include "slicing/SlicingTestSupport.h"
+#include "support/TempDir.h"
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include <volsg/core/Error.h>
+#include <volsg/nodes/Volume.h>
+#include <volsg/nodes/VolumeData.h>
+#include <volsg/paging/PagedVolume.h>
+#include <volsg/volumeio/OmeZarrPyramid.h>
+#include <volsg/volumeio/VolumeReader.h>
+
+using namespace volsg;
+using namespace volsg::test;
+
+namespace {
+
+/// A 64^3 UByte Marschner-Lobb volume written as a pyramid of 16^3 chunks (levels 64, 32, 16).
+std::string writeTestPyramid(const TempDir& dir) {
+    const std::string folder = dir.file("ml.zarr");
+    PyramidOptions options;
+    options.chunk = 16;
+    writeOmeZarrPyramid(*makeMarschnerLobb(64, VoxelType::UByte), folder, options);
+    return folder;
+}
+
+TransferFunction1D testFunction() {
+    return transferFunction({{0, 0}, {0.3, 0.0}, {0.6, 0.3}, {1, 0.8}}, {{0, 1}, {1, 0.3}},
+                            {{0, 0.2}, {1, 0.9}});
+}
+
+} // namespace
+
+TEST_CASE_FIXTURE(GlFixture,
+                  "a paged volume refines to the in-memory render within its host and texture "
+                  "budgets") {
+    const TempDir dir("volsg-paged");
+    const std::string folder = writeTestPyramid(dir);
+    PagedVolumeOptions options;
+    options.standInBytes = 16 * 16 * 16; // level 2 kept whole: levels 0 and 1 page
+    options.chunkCacheBytes = 16 * 16 * 16 * 4;
+    options.hostBudget = 120 * 1024; // some 25 bricks of level 0 (16^3): evictions happen
+    options.loaderThreads = 2;
+    auto paged = std::make_shared<PagedVolume>(folder, options);
+    REQUIRE(paged->standInLevel() == 2);
+    const ref_ptr<VolumeGrid> full = readOmeZarr(folder, 0);
+    CHECK(paged->standIn()->extent() == full->extent());
+
+    auto root = Separator::create();
+    auto node = GridVolume::create();
+    node->description = volumeOf(paged->standIn(), testFunction());
+    node->description.paged = paged;
+    node->settings.numPlanes = 160;
+    node->settings.lodPixels = 0.25; // level 0 everywhere at this size
+    // Bricks of 14 cells (16^3 texels with the guards): all 125 of level 0 and their 27 + 8
+    // ancestors (kept as fallbacks), as R16 texels.
+    REQUIRE(paged->layout().brickCells() == 14);
+    node->settings.textureBudget = (125 + 27 + 8) * 16 * 16 * 16 * 2;
+    root->addChild(node);
+    const int size = 96;
+    RenderOptions render;
+    render.width = render.height = size;
+    render.camera = framing(*full, {1.0f, 0.4f, 0.7f});
+
+    const Image first = renderer.render(*root, render);
+    const PagingStats firstStats = node->stats.paging;
+    REQUIRE(firstStats.paged);
+    CHECK(firstStats.finestLevel == 2); // only the stand-in's bricks, without waiting
+    CHECK_FALSE(firstStats.converged);
+    Image last = first;
+    int frames = 1;
+    for (; frames < 400 && !node->stats.paging.converged; ++frames) {
+        paged->cache().waitIdle(50);
+        render.interactive = frames % 3 == 1; // interactive frames refine too, never waiting
+        last = renderer.render(*root, render);
+        const PagingStats& s = node->stats.paging;
+        CHECK(s.bricksDrawn > 0); // at least the roots, whatever the upload allowance left
+        CHECK(s.hostBytes <= s.hostBudget);
+        CHECK(s.textureBytes <= s.textureBudget);
+        if (s.hostBytes > s.hostBudget || s.textureBytes > s.textureBudget) break;
+    }
+    render.interactive = false;
+    last = renderer.render(*root, render);
+    REQUIRE(node->stats.paging.converged);
+    CHECK(node->stats.paging.finestLevel == 0);
+    CHECK(node->stats.paging.coarsestLevel == 0);
+    CHECK(node->stats.paging.hostEvictions > 0); // the host budget was tight, and held
+    CHECK(paged->cache().stats().peakBytes <= paged->cache().stats().budgetBytes);
+
+    auto inMemory = Separator::create();
+    auto whole = GridVolume::create();
+    whole->description = volumeOf(full, testFunction());
+    whole->settings.numPlanes = 160;
+    inMemory->addChild(whole);
+    const Image want = renderer.render(*inMemory, render);
+    keepImage(first, "paged-first");
+    keepImage(last, "paged-converged");
+    keepImage(want, "paged-in-memory");
+    const ImageDifference converged = difference(last, want);
+    const ImageDifference coarse = difference(first, want);
+    MESSAGE("coarse rmse " << coarse.rmse / k8Bit << "/255, converged " << converged.rmse / k8Bit
+                           << "/255 (max " << converged.max / k8Bit << ") after " << frames
+                           << " frames");
+    // Same voxels, same planes, bricks of one level whose guard voxels make seams exact: the
+    // images differ by float rounding of the brick-local texture coordinates only.
+    CHECK(converged.rmse < 0.1 * k8Bit);
+    CHECK(converged.max < 1.0 * k8Bit);
+    CHECK(coarse.rmse > 4.0 * converged.rmse); // the first frame was coarse indeed
+}
+
+TEST_CASE_FIXTURE(GlFixture, "an unreadable chunk leaves its bricks coarse, says where, and "
+                             "the frame still converges") {
+    const TempDir dir("volsg-paged");
+    const std::string folder = writeTestPyramid(dir);
+    {
+        std::ofstream corrupt(folder + "/0/1/1/1", std::ios::binary | std::ios::trunc);
+        corrupt << "not a zstd frame";
+    }
+    PagedVolumeOptions options;
+    options.standInBytes = 16 * 16 * 16;
+    options.chunkCacheBytes = 16 * 16 * 16 * 4;
+    options.hostBudget = 1 << 20;
+    auto paged = std::make_shared<PagedVolume>(folder, options);
+    auto root = Separator::create();
+    auto node = GridVolume::create();
+    node->description = volumeOf(paged->standIn(), testFunction());
+    node->description.paged = paged;
+    node->settings.lodPixels = 0.25;
+    root->addChild(node);
+    RenderOptions render;
+    render.width = render.height = 64;
+    render.camera = framing(*paged->standIn(), {1.0f, 0.4f, 0.7f});
+    int frames = 0;
+    do {
+        paged->cache().waitIdle(50);
+        renderer.render(*root, render);
+    } while (!node->stats.paging.converged && ++frames < 400);
+    const PagingStats& s = node->stats.paging;
+    CHECK_MESSAGE(s.converged, "after " << frames << " frames: " << s.wanted << " wanted, "
+                                        << s.queued << " queued, " << s.loading << " loading, "
+                                        << s.loadFailures << " failed, levels " << s.finestLevel
+                                        << ".." << s.coarsestLevel);
+    CHECK(node->stats.paging.loadFailures > 0);
+    CHECK(node->stats.paging.coarsestLevel >= 1); // the bricks of the bad chunk: their parents
+    CHECK(node->stats.paging.firstError.find("0/1/1/1") != std::string::npos);
+    CHECK(node->stats.paging.firstError.find("zstd") != std::string::npos);
+}
+
+TEST_CASE("VolumeData pages an OME-Zarr pyramid when asked or when level 0 exceeds its budget") {
+    const TempDir dir("volsg-paged");
+    const std::string folder = writeTestPyramid(dir);
+    auto data = VolumeData::create();
+    data->fileName = folder;
+    CHECK_FALSE(data->pagedVolume()); // 256 KiB fit the default 1 GiB: read whole
+    CHECK(data->grid()->dimensions() == glm::ivec3(64));
+    data->paging = VolumeData::ON;
+    REQUIRE(data->pagedVolume());
+    CHECK(data->grid()->extent() == readOmeZarr(folder, 0)->extent());
+    CHECK(data->localBounds().max.x == doctest::Approx(0.5 * data->grid()->extent().x));
+    data->paging = VolumeData::OFF;
+    CHECK_FALSE(data->pagedVolume());
+    // A budget too small for the coarse levels and a few bricks is one error naming the image.
+    data->paging = VolumeData::ON;
+    data->memoryBudget = 0u;
+    std::string error;
+    try {
+        data->grid();
+    } catch (const Error& e) {
+        error = e.what();
+    }
+    CHECK(error.find("host memory budget of 0 bytes") != std::string::npos);
+    CHECK(error.find("ml.zarr") != std::string::npos);
+}
