@@ -399,7 +399,7 @@ OpenLevel openLevel(const std::string& path, int level, std::uint64_t byteLimit)
                         (fs::exists(path, ec) ? "not a folder" : "no such folder"),
                     path);
     OpenLevel open;
-    open.where = findLevelChecked(fs::path(path).lexically_normal(), level);
+    open.where = findOmeZarrLevel(path, level);
     open.zarrayPath = (fs::path(open.where.arrayFolder) / ".zarray").string();
     open.layout = readZarrArrayLayout(open.where.arrayFolder, byteLimit);
     const std::size_t rank = open.layout.shape.size();
@@ -432,7 +432,7 @@ void readChunksOfRegion(const OpenLevel& open, glm::ivec3 first, glm::ivec3 coun
     const glm::ivec3 chunk(int(layout.chunks[rank - 1]), int(layout.chunks[rank - 2]),
                            int(layout.chunks[rank - 3]));
     const glm::ivec3 end = first + count;
-    ChunkLoader loader(open.zarrayPath, layout);
+    ZarrChunkLoader loader(open.zarrayPath, layout);
     std::vector<std::uint64_t> index(rank, 0);
     const glm::ivec3 firstChunk = first / chunk, lastChunk = (end - 1) / chunk;
     for (int cz = firstChunk.z; cz <= lastChunk.z; ++cz)

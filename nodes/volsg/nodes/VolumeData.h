@@ -74,7 +74,7 @@ public:
     /// whole, with level 0's box
     /// (PagedVolume::standIn), which whatever needs a whole grid uses (histogram, picking,
     /// the reference ray caster, shear-warp, slices); the Volume node draws every level.
-    std::shared_ptr<PagedVolume> pagedVolume() const;
+    virtual std::shared_ptr<PagedVolume> pagedVolume() const;
 
     /// Takes `data`, read already from what the fields name, as this node's voxels (the scene
     /// built for a data file reads it once: volumescene/SceneForFile.h); `directory` is where

@@ -40,6 +40,8 @@ public:
     /// The shown step's voxels (VolumeData's interface: Volume, ShearWarpVolume, bounding box).
     ref_ptr<const VolumeGrid> grid() const override;
     ref_ptr<const VolumeGrid> tagGrid() const override;
+    /// Series are never paged: their steps are in memory (or read one by one) whole.
+    std::shared_ptr<PagedVolume> pagedVolume() const override { return nullptr; }
     /// The shown step's box without loading its grid when its lists (or an earlier step's
     /// extent) say it: browsing cached steps never waits for a grid.
     Box3 localBounds() const override;
