@@ -5,6 +5,8 @@
 // type's image with Coin3D's is the ctest DraggersAgreeWithCoin (tests/draggers/*.iv).
 #include <doctest/doctest.h>
 
+#include "support/Offscreen.h"
+
 #include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/actions/PickAction.h>
 #include <volsg/context/OSMesaContext.h>
@@ -190,11 +192,7 @@ TEST_CASE("a ray picks a dragger's part, with the dragger on the picked path") {
 
 namespace {
 
-struct Offscreen {
-    OSMesaContext context;
-    bool errorChecking = enableGlErrorChecking();
-    Renderer renderer;
-};
+using volsg::test::Offscreen;
 
 /// Covered columns and rows: min x, min y, max x, max y.
 glm::ivec4 coveredRect(const Image& image) {

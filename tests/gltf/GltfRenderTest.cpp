@@ -4,6 +4,8 @@
 // sample files' silhouettes, picking, bounding boxes, search and write.
 #include <doctest/doctest.h>
 
+#include "support/Offscreen.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -41,11 +43,7 @@ constexpr int kSize = 64;
 /// With the orthographic camera below, one world unit is this many pixels.
 constexpr float kPixelsPerUnit = kSize / 2.5f;
 
-struct Offscreen {
-    OSMesaContext context;
-    bool errorChecking = enableGlErrorChecking(); // any GL error makes render() throw
-    Renderer renderer;
-};
+using volsg::test::Offscreen;
 
 std::string sample(const std::string& relative) {
     return std::string(VOLSG_DATA_DIR) + "/gltf/" + relative;

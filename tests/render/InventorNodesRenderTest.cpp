@@ -6,6 +6,8 @@
 // they are exact too.
 #include <doctest/doctest.h>
 
+#include "support/Offscreen.h"
+
 #include <volsg/context/OSMesaContext.h>
 #include <volsg/core/Error.h>
 #include <volsg/gl/GlDebug.h>
@@ -26,11 +28,7 @@ using namespace volsg;
 
 namespace {
 
-struct Offscreen {
-    OSMesaContext context;
-    bool errorChecking = enableGlErrorChecking();
-    Renderer renderer;
-};
+using volsg::test::Offscreen;
 
 constexpr int kSize = 100;
 constexpr double kPixelsPerUnit = 20.0;

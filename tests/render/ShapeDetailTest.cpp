@@ -6,6 +6,8 @@
 // its lit image.
 #include <doctest/doctest.h>
 
+#include "support/Offscreen.h"
+
 #include <volsg/context/OSMesaContext.h>
 #include <volsg/geometry/PrimitiveMeshes.h>
 #include <volsg/gl/GlDebug.h>
@@ -32,11 +34,7 @@ using namespace volsg;
 
 namespace {
 
-struct Offscreen {
-    OSMesaContext context;
-    bool errorChecking = enableGlErrorChecking();
-    Renderer renderer;
-};
+using volsg::test::Offscreen;
 
 constexpr int kSize = 256;
 constexpr double kPixelsPerUnit = 4.0; // the camera's 64 units over 256 pixels

@@ -2,6 +2,8 @@
 // state scoping, clip planes, switches, instancing, Lambert shading and blending.
 #include <doctest/doctest.h>
 
+#include "support/Offscreen.h"
+
 #include <volsg/context/OSMesaContext.h>
 #include <volsg/core/Error.h>
 #include <volsg/gl/GlDebug.h>
@@ -31,12 +33,7 @@ using namespace volsg;
 
 namespace {
 
-/// An OSMesa context with GL errors reported, and a Renderer for it (destroyed first).
-struct Offscreen {
-    OSMesaContext context;
-    bool errorChecking = enableGlErrorChecking(); // any GL error makes render() throw
-    Renderer renderer;
-};
+using volsg::test::Offscreen;
 
 /// Looks down -Z from z = 5; `height` world units span the image height when it is the
 /// narrower side.

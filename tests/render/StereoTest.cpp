@@ -4,6 +4,8 @@
 // in its half.
 #include <doctest/doctest.h>
 
+#include "support/Offscreen.h"
+
 #include <cmath>
 #include <string>
 
@@ -17,11 +19,7 @@ using namespace volsg;
 
 namespace {
 
-struct Offscreen {
-    OSMesaContext context;
-    bool errorChecking = enableGlErrorChecking();
-    Renderer renderer;
-};
+using volsg::test::Offscreen;
 
 constexpr int kSize = 128;
 constexpr double kFocal = 5.0, kSeparationFraction = 0.1; // eyes 0.5 apart

@@ -4,6 +4,8 @@
 // surface's coverage.
 #include <doctest/doctest.h>
 
+#include "support/Offscreen.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -22,11 +24,7 @@ using namespace volsg;
 
 namespace {
 
-struct Offscreen {
-    OSMesaContext context;
-    bool errorChecking = enableGlErrorChecking(); // any GL error makes render() throw
-    Renderer renderer;
-};
+using volsg::test::Offscreen;
 
 constexpr int kSize = 100;
 

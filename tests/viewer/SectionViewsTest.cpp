@@ -3,6 +3,8 @@
 // volume, and the three views share one copy of the data and tables in the renderer.
 #include <doctest/doctest.h>
 
+#include "support/Offscreen.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -37,11 +39,7 @@ Separator {
 }
 )";
 
-struct Offscreen {
-    OSMesaContext context;
-    bool errorChecking = enableGlErrorChecking();
-    Renderer renderer;
-};
+using volsg::test::Offscreen;
 
 } // namespace
 
