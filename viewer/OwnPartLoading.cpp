@@ -58,6 +58,10 @@ OwnPartLoad loadOwnPart(Node& root, const Volume& volume, const std::string& sce
         load.whyNot = "the VolumeData's file is not an OME-Zarr image";
         return load;
     }
+    if (node.pagesFromPyramid()) {
+        load.paged = true;
+        return load;
+    }
     load.whyNot = reachBeyondGhost(volume, interactive);
     if (!load.whyNot.empty()) return load;
 

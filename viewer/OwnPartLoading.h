@@ -19,7 +19,10 @@ namespace volsg::cli {
 /// What loading the process's own part did.
 struct OwnPartLoad {
     bool loaded = false; ///< only the part and its ghost were read
-    std::string whyNot;  ///< when not, why (the whole volume is read as usual)
+    /// The volume is paged from its pyramid: each process's frames load only the bricks
+    /// meeting its part (PagedBricks.cpp, keepToPart), so nothing is read here.
+    bool paged = false;
+    std::string whyNot; ///< when not, why (the whole volume is read as usual)
     double milliseconds = 0.0;
     double voxelsRead = 0.0; ///< voxels of the box read (the chunks hold some more)
     /// 16-bit and float data take the data's own range where a transfer function gives none:
@@ -36,7 +39,8 @@ struct OwnPartLoad {
 /// degrees of the view axis).
 constexpr int kOwnPartGhost = 4;
 
-/// When the scene's one VolumeData reads an OME-Zarr image (no labels) and `volume` draws under its
+/// When the scene's one VolumeData pages an OME-Zarr pyramid, reads nothing and says so (paged).
+/// Otherwise, when it reads an OME-Zarr image (no labels) and `volume` draws under its
 /// fixed plane rules (errorTarget 0, numPlanes 0, samplesPerPlane 1, not interactive), reads part
 /// `part` of `parts` (KdVolumeSplit) with kOwnPartGhost voxels around it into the node
 /// (VolumeData::adoptLoaded); the rest of the grid holds the fill value. Otherwise reads

@@ -1,10 +1,12 @@
 #include "SortLastRender.h"
 #include "OwnPartLoading.h"
+#include "VolumeReport.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <thread>
 #include <vector>
 
 #include <mpi.h>
@@ -35,6 +37,12 @@ struct RankTimes {
     double position = 0.0;            ///< its place front to back
     double readMilliseconds = 0.0;    ///< reading its own part (0: the scene read it all)
     double voxelsRead = 0.0;          ///< voxels of its own part and ghost read
+    // A paged volume: what this process paged in, over the frames it took to converge.
+    double pagedBricks = 0.0;
+    double pagedMegabytes = 0.0;
+    double hostMegabytes = 0.0; ///< its bricks in host memory at the end
+    double frames = 1.0;
+    double paged = 0.0; ///< 1: the Volume is paged from its pyramid
 };
 
 /// The whole volume's natural range from the parts' own (VolumeGrid::naturalRange: 16-bit data
@@ -47,6 +55,21 @@ glm::dvec2 agreedRange(const OwnPartLoad& load) {
     if (lo < hi) return {lo, hi};
     return load.type == VoxelType::UShort ? glm::dvec2(0.0, 65535.0)
                                           : glm::dvec2(-32768.0, 32767.0);
+}
+
+/// The smallest value over the processes (VolumePartition::smallestOfAll).
+double smallestOfAll(double value) {
+    MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+    return value;
+}
+
+/// Collective: whether any process's paged volume still waits for bricks, and every process
+/// is within the wait (rank 0's clock decides, so all stop together).
+bool pagingGoesOn(Node& root, double waitedSeconds, double maxSeconds) {
+    int state[2] = {volumesRefining(root) ? 1 : 0, waitedSeconds < maxSeconds ? 1 : 0};
+    MPI_Bcast(&state[1], 1, MPI_INT, 0, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, &state[0], 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    return state[0] == 1 && state[1] == 1;
 }
 
 /// The one Volume a sort-last render splits; null when the scene has none (the partials are
@@ -78,7 +101,9 @@ void printTiming(const std::vector<RankTimes>& ranks, const std::vector<Composit
     std::printf("sort-last: %d processes, %d x %d pixels (%.1f MB of RGBA float per partial)\n",
                 int(ranks.size()), frame.width, frame.height,
                 16.0 * double(frame.width) * double(frame.height) / 1e6);
-    if (load.loaded)
+    if (load.paged)
+        std::printf("  each process paged in only the bricks of its part (OME-Zarr pyramid)\n");
+    else if (load.loaded)
         std::printf("  each process read only its part and %d ghost voxels (OME-Zarr chunks)\n",
                     kOwnPartGhost);
     else if (ranks.size() > 1)
@@ -89,6 +114,12 @@ void printTiming(const std::vector<RankTimes>& ranks, const std::vector<Composit
                     int(ranks[r].position), ranks[r].voxels / 1e6, ranks[r].voxelsRead / 1e6,
                     ranks[r].readMilliseconds, ranks[r].partialMilliseconds,
                     ranks[r].opaqueMilliseconds);
+    if (ranks.front().paged > 0.0) {
+        std::printf("  rank  frames  bricks paged in  MB paged in  MB held\n");
+        for (std::size_t r = 0; r < ranks.size(); ++r)
+            std::printf("  %4zu  %6d  %15d  %11.2f  %7.2f\n", r, int(ranks[r].frames),
+                        int(ranks[r].pagedBricks), ranks[r].pagedMegabytes, ranks[r].hostMegabytes);
+    }
     std::vector<double> order, reduce, total;
     for (const CompositeTiming& t : runs) {
         order.push_back(t.orderMilliseconds);
@@ -144,10 +175,29 @@ Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& option
         }
         RenderOptions partialOptions = options;
         partialOptions.volumePartial = true;
-        partialOptions.partition = {rank, size};
-        const auto started = Clock::now();
+        partialOptions.partition = {rank, size, smallestOfAll};
+        auto started = Clock::now();
         partial = renderer.render(root, partialOptions);
         mine.partialMilliseconds = millisecondsSince(started);
+        // A paged volume draws what is loaded and asks for the rest: draw again until every
+        // process's part has converged (all draw the same number of frames, as the partials'
+        // plane spacing is agreed in each).
+        const auto waitStarted = Clock::now();
+        while (pagingGoesOn(root, millisecondsSince(waitStarted) / 1000.0,
+                            report.maxPagingWaitSeconds)) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            started = Clock::now();
+            partial = renderer.render(root, partialOptions);
+            mine.partialMilliseconds = millisecondsSince(started);
+            ++mine.frames;
+        }
+        if (volume) {
+            const PagingStats& paging = volume->slicingStats().paging;
+            mine.paged = paging.paged ? 1.0 : 0.0;
+            mine.pagedBricks = double(paging.bricksLoaded);
+            mine.pagedMegabytes = double(paging.bytesLoaded) / 1e6;
+            mine.hostMegabytes = double(paging.hostBytes) / 1e6;
+        }
         mine.position = volume ? volume->slicingStats().partPosition : rank;
         if (volume) {
             const SlicingStats& stats = volume->slicingStats();

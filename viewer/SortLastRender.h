@@ -25,6 +25,9 @@ struct SortLastReport {
     /// With timing: composites timed this many times (median and fastest: on a loaded machine
     /// the fastest is the cost, the median what a frame may see).
     int compositeRepeats = 15;
+    /// A paged volume's partial is drawn again as bricks arrive until every process's has
+    /// converged, or this long.
+    double maxPagingWaitSeconds = 600.0;
 };
 
 /// Renders `root` across the processes of `mpi`: every process draws the opaque geometry

@@ -8,10 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <support/TempDir.h>
 #include <volsg/image/Image.h>
@@ -82,9 +84,12 @@ float maxDifference(const volsg::Image& a, const volsg::Image& b) {
 /// within 1/255 of the plain one, and the view not empty (a blank image would match too).
 /// `prepare` writes what the scene reads into the folder; `timingSays`, when given, is what
 /// --mpi-timing must print with 4 processes.
-void checkAcrossProcesses(const std::string& name, const std::string& text,
-                          void (*prepare)(const volsg::test::TempDir&) = nullptr,
-                          const std::string& timingSays = "", const std::string& options = "") {
+/// Returns what --mpi-timing printed for 1, 2 and 4 processes, in that order.
+std::vector<std::string>
+checkAcrossProcesses(const std::string& name, const std::string& text,
+                     void (*prepare)(const volsg::test::TempDir&) = nullptr,
+                     const std::string& timingSays = "", const std::string& options = "") {
+    std::vector<std::string> printed;
     const volsg::test::TempDir dir("volsg-sortlast");
     if (prepare) prepare(dir);
     const std::string file = dir.file(name + ".iv");
@@ -111,7 +116,9 @@ void checkAcrossProcesses(const std::string& name, const std::string& text,
         MESSAGE(name << ", " << processes << " processes: max difference " << difference * 255.0f
                      << "/255");
         CHECK(difference <= 1.0f / 255.0f);
+        printed.push_back(r.out);
     }
+    return printed;
 }
 
 } // namespace
@@ -180,12 +187,14 @@ void writeSixteenBitImage(const volsg::test::TempDir& dir) {
     volsg::writeOmeZarrPyramid(*grid, dir.file("ml.zarr"), options);
 }
 
-std::string zarrScene(const std::string& volumeFields) {
+std::string zarrScene(const std::string& volumeFields, const std::string& dataFields = "") {
     return "#Inventor V2.1 ascii\nSeparator {\n"
            "  PerspectiveCamera { position 0.3 0.2 3 heightAngle 0.7 nearDistance 0.5 "
            "farDistance 10 }\n"
            "  Transform { rotation 1 1 0 0.5 }\n"
-           "  VolumeData { fileName \"ml.zarr\" }\n"
+           "  VolumeData { fileName \"ml.zarr\" " +
+           dataFields +
+           " }\n"
            "  TransferFunction { red [ 0 0.2, 1 1 ] green [ 0 0.8, 1 0.4 ] blue [ 0 1, 1 0.1 ]\n"
            "    alpha [ 0 0, 0.2 0.05, 1 0.8 ] }\n"
            "  Volume { " +
@@ -206,6 +215,48 @@ TEST_CASE("sort-last with an error target reads the whole volume everywhere, and
     checkAcrossProcesses("zarr-target", zarrScene(""), writeSixteenBitImage,
                          "every process read the whole volume: the Volume chooses its planes "
                          "from errorTarget");
+}
+
+namespace {
+
+/// The bricks each process paged in, from --mpi-timing's table.
+std::vector<int> bricksPagedIn(const std::string& printed) {
+    std::vector<int> bricks;
+    const std::size_t table = printed.find("bricks paged in");
+    if (table == std::string::npos) return bricks;
+    std::istringstream rows(printed.substr(printed.find('\n', table) + 1));
+    std::string line;
+    while (std::getline(rows, line)) {
+        int rank = 0, frames = 0, count = 0;
+        if (std::sscanf(line.c_str(), "%d %d %d", &rank, &frames, &count) != 3) break;
+        bricks.push_back(count);
+    }
+    return bricks;
+}
+
+} // namespace
+
+TEST_CASE("sort-last of a paged pyramid: each process pages in only its part's bricks") {
+    // paging ON: the 16-bit image's pyramid (8^3 chunks, 100 bricks at level 0) is drawn
+    // brick by brick. Each process selects and loads only the bricks meeting its part; the
+    // processes agree on the plane spacing (the finest level any draws) and draw until all
+    // have converged: the image of one process converged.
+    const std::vector<std::string> printed =
+        checkAcrossProcesses("paged", zarrScene("lodPixels 0.1", "paging ON memoryBudget 1"), writeSixteenBitImage,
+                             "each process paged in only the bricks of its part");
+    REQUIRE(printed.size() == 3);
+    const std::vector<int> one = bricksPagedIn(printed[0]), four = bricksPagedIn(printed[2]);
+    REQUIRE(one.size() == 1);
+    REQUIRE(four.size() == 4);
+    int sum = 0;
+    for (const int bricks : four) {
+        CHECK(bricks > 0);
+        CHECK(bricks < one[0] * 3 / 4); // a part and the bricks its seams cut, not the whole
+        sum += bricks;
+    }
+    MESSAGE("bricks paged in: one process " << one[0] << ", four " << four[0] << " + " << four[1]
+                                            << " + " << four[2] << " + " << four[3]);
+    CHECK(sum < 2 * one[0]);
 }
 
 TEST_CASE("sort-last with more processes than the volume has cells: the empty parts add nothing") {

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include <glm/glm.hpp>
 
@@ -89,6 +90,12 @@ struct RenderDebug {
 struct VolumePartition {
     int part = 0;
     int parts = 1;
+    /// The smallest of the values every process passes (a collective: each process calls it
+    /// the same number of times in a frame). Where the processes must agree on something
+    /// their parts decide alone: a paged volume's finest drawn level sets the plane spacing
+    /// for all. Unset: this process's value.
+    std::function<double(double)> smallestOfAll;
+    double smallest(double value) const { return smallestOfAll ? smallestOfAll(value) : value; }
 };
 
 /// The frame being drawn, as engines see it.

@@ -2,6 +2,7 @@
 #include <volsg/slicing/PagedBricks.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 
@@ -9,6 +10,7 @@
 #include <volsg/paging/PagedVolume.h>
 #include <volsg/slicing/BrickTexels.h>
 #include <volsg/slicing/SliceShared.h>
+#include <volsg/sortlast/KdVolumeSplit.h>
 
 namespace volsg::slicing {
 
@@ -109,6 +111,26 @@ BrickKey place(PagedSlots& slots, VolumeTextures& v, const PagedLayout& layout, 
     return key;
 }
 
+/// Sort-last (lib/volsg/sortlast/README.md): this process draws only the fragments whose plane
+/// point lies in its part of the volume box, so it needs (and loads) only the bricks meeting
+/// that part: the selection's region becomes the part, within a BoxClip's region if any.
+void keepToPart(const RayCastVolume& volume, const VolumePartition& partition,
+                LodRequest& request) {
+    // The split the slicer draws by (partitionVolume), of the grid it is given: the stand-in.
+    const KdVolumeSplit split(volume.data->dimensions(), volume.data->spacing(), partition.parts);
+    const KdVolumeSplit::Part& part = split.part(partition.part);
+    constexpr double kNowhere = std::numeric_limits<double>::infinity();
+    glm::dvec3 lo = part.boxMin, hi = part.boxMax;
+    if (request.regionMin.x <= request.regionMax.x) { // a BoxClip's region too
+        lo = glm::max(lo, request.regionMin);
+        hi = glm::min(hi, request.regionMax);
+    }
+    // An empty part or intersection meets no brick (min > max would mean the whole volume).
+    if (part.empty || glm::any(glm::greaterThanEqual(lo, hi))) lo = hi = glm::dvec3(kNowhere);
+    request.regionMin = lo;
+    request.regionMax = hi;
+}
+
 } // namespace
 
 PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTextures& v,
@@ -183,6 +205,7 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
             request.regionMax = glm::max(request.regionMax, p);
         }
     }
+    if (frame.partition.parts > 1) keepToPart(volume, frame.partition, request);
     LodSelection chosen = selectBricks(layout, view, request);
     // A brick that could not be read stays coarse (its parent drawn) and is wanted no more:
     // the frame converges without it, and the error is reported.
@@ -268,9 +291,15 @@ PagingStats preparePaged(FrameContext& frame, const Object& owner, std::uint64_t
     PagedSlots& slots = frame.cache.get<PagedSlots>(owner, key);
     PagingStats stats = preparePagedBricks(frame, slots, v, paged, local, settings.textureBudget,
                                            settings.lodPixels, volume);
-    if (settings.numPlanes <= 0)
-        settings.planeSpacingL0 =
-            (frame.interactive ? 1.0 : 0.5) * stats.finestDrawnVoxel / local.L0;
+    if (settings.numPlanes <= 0) {
+        // Sort-last: the planes of every process follow the finest level any of them draws,
+        // as one process drawing all the parts would (a part drawing nothing has no say).
+        double finest = stats.bricksDrawn > 0 ? stats.finestDrawnVoxel
+                                              : std::numeric_limits<double>::infinity();
+        finest = frame.partition.smallest(finest);
+        if (!std::isfinite(finest)) finest = stats.finestDrawnVoxel;
+        settings.planeSpacingL0 = (frame.interactive ? 1.0 : 0.5) * finest / local.L0;
+    }
     return stats;
 }
 

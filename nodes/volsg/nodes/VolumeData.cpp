@@ -97,25 +97,37 @@ ref_ptr<VolumeGrid> readVolumeFile(const VolumeData& node, const std::string& pa
     return grid;
 }
 
-/// The pyramid to page the data from, when fileName is an OME-Zarr folder that paging asks to
-/// page (AUTO: level 0 larger than memoryBudget); else null.
-std::shared_ptr<PagedVolume> openPaged(const VolumeData& node, const std::string& directory) {
+/// The host budget of a paged volume, in bytes.
+std::uint64_t hostBudgetOf(const VolumeData& node) {
+    return std::uint64_t(node.memoryBudget()) << 20;
+}
+
+/// The OME-Zarr folder to page the data from, when fileName is one that paging asks to page
+/// (AUTO: level 0 larger than memoryBudget); else empty. Reads the pyramid's metadata only.
+std::string pagedPath(const VolumeData& node, const std::string& directory) {
     if (node.fileName().empty() || node.paging() == VolumeData::OFF || !node.tagFileName().empty())
-        return nullptr;
+        return "";
     const std::string path = ReadContext{{}, directory}.resolve(node.fileName());
-    if (!isZarrFolder(path)) return nullptr;
-    PagedVolumeOptions options;
-    options.hostBudget = std::uint64_t(node.memoryBudget()) << 20;
-    // A small budget keeps a smaller stand-in and chunk cache, leaving most of it to bricks.
-    options.standInBytes = std::min(options.standInBytes, options.hostBudget / 16);
-    options.chunkCacheBytes = std::min(options.chunkCacheBytes, options.hostBudget / 8);
+    if (!isZarrFolder(path)) return "";
     if (node.paging() == VolumeData::AUTO) {
         const PyramidSource source(path, 0);
         const glm::ivec3 d = source.level(0).dimensions;
         const std::uint64_t bytes = std::uint64_t(d.x) * std::uint64_t(d.y) * std::uint64_t(d.z) *
                                     voxelTypeSize(source.type());
-        if (bytes <= options.hostBudget) return nullptr;
+        if (bytes <= hostBudgetOf(node)) return "";
     }
+    return path;
+}
+
+/// The pyramid to page the data from (pagedPath), or null.
+std::shared_ptr<PagedVolume> openPaged(const VolumeData& node, const std::string& directory) {
+    const std::string path = pagedPath(node, directory);
+    if (path.empty()) return nullptr;
+    PagedVolumeOptions options;
+    options.hostBudget = hostBudgetOf(node);
+    // A small budget keeps a smaller stand-in and chunk cache, leaving most of it to bricks.
+    options.standInBytes = std::min(options.standInBytes, options.hostBudget / 16);
+    options.chunkCacheBytes = std::min(options.chunkCacheBytes, options.hostBudget / 8);
     return std::make_shared<PagedVolume>(path, options);
 }
 
@@ -186,6 +198,11 @@ ref_ptr<const VolumeGrid> VolumeData::grid() const {
 std::shared_ptr<PagedVolume> VolumeData::pagedVolume() const {
     loadIfChanged();
     return paged_;
+}
+
+bool VolumeData::pagesFromPyramid() const {
+    if (generator() != NONE) return false;
+    return !pagedPath(*this, directory_).empty();
 }
 
 ref_ptr<const VolumeGrid> VolumeData::tagGrid() const {

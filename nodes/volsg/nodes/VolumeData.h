@@ -75,6 +75,9 @@ public:
     /// (PagedVolume::standIn), which whatever needs a whole grid uses (histogram, picking,
     /// the reference ray caster, shear-warp, slices); the Volume node draws every level.
     virtual std::shared_ptr<PagedVolume> pagedVolume() const;
+    /// Whether the fields ask for the data to be paged (as pagedVolume() will be), decided
+    /// from the pyramid's metadata without reading voxels. Throws Error for an unreadable one.
+    bool pagesFromPyramid() const;
 
     /// Takes `data`, read already from what the fields name, as this node's voxels (the scene
     /// built for a data file reads it once: volumescene/SceneForFile.h); `directory` is where
