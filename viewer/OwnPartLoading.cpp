@@ -18,24 +18,7 @@ namespace volsg::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-/// Why the fragments of `volume` may sample further than kOwnPartGhost voxels from their
-/// box, or empty when they do not.
-std::string reachBeyondGhost(const Volume& volume, bool interactive) {
-    // An error target chooses plane spacing and samples per plane from the data, which each
-    // process sees only a part of, and may choose slabs many voxels deep.
-    if (volume.errorTarget() != 0.0f) return "the Volume chooses its planes from errorTarget";
-    if (volume.numPlanes() != 0) return "the Volume's numPlanes is set";
-    if (volume.samplesPerPlane() > 1) return "the Volume takes several samples per plane";
-    if (interactive) return "--interactive draws fewer planes";
-    return "";
-}
-
-} // namespace
-
-OwnPartLoad loadOwnPart(Node& root, const Volume& volume, const std::string& sceneFile,
-                        bool interactive, int part, int parts) {
+OwnPartLoad loadOwnPart(Node& root, const std::string& sceneFile, int part, int parts) {
     OwnPartLoad load;
     const std::vector<Node*> data = findAll(root, VolumeData::classType(), true);
     if (data.size() != 1) {
@@ -62,9 +45,6 @@ OwnPartLoad loadOwnPart(Node& root, const Volume& volume, const std::string& sce
         load.paged = true;
         return load;
     }
-    load.whyNot = reachBeyondGhost(volume, interactive);
-    if (!load.whyNot.empty()) return load;
-
     const auto started = std::chrono::steady_clock::now();
     const glm::ivec3 dims = readOmeZarrDimensions(path.string());
     // The split the slicer will make (FrameContext::partition) from the grid's dimensions and

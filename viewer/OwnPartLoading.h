@@ -10,10 +10,6 @@
 #include <volsg/core/Node.h>
 #include <volsg/volume/VolumeGrid.h>
 
-namespace volsg {
-class Volume;
-}
-
 namespace volsg::cli {
 
 /// What loading the process's own part did.
@@ -32,21 +28,19 @@ struct OwnPartLoad {
     VoxelType type = VoxelType::UByte;
 };
 
-/// Voxels beyond its box a part's fragments sample under the fixed plane rules (2 planes a
-/// voxel, one sample each): one for trilinear interpolation, one for lighting's central
-/// differences, and two for the ray's stretch a fragment stands for (half a slab; a box
-/// face's sliver, under one plane spacing: 0.5 L0 / cos, under 2 voxels for rays within 75
-/// degrees of the view axis).
+/// Voxels beyond its box a part's fragments sample when the process holds only its part: one
+/// for trilinear interpolation and one for lighting's central differences beyond the part's
+/// faces, where slabs end (VolumePartition::ownDataOnly); where planes lie at most a voxel
+/// apart or a fragment samples only its point, slabs reach at most half a voxel further.
 constexpr int kOwnPartGhost = 4;
 
 /// When the scene's one VolumeData pages an OME-Zarr pyramid, reads nothing and says so (paged).
-/// Otherwise, when it reads an OME-Zarr image (no labels) and `volume` draws under its
-/// fixed plane rules (errorTarget 0, numPlanes 0, samplesPerPlane 1, not interactive), reads part
-/// `part` of `parts` (KdVolumeSplit) with kOwnPartGhost voxels around it into the node
-/// (VolumeData::adoptLoaded); the rest of the grid holds the fill value. Otherwise reads
-/// nothing and says why. Relative file names resolve against `sceneFile`'s folder.
-OwnPartLoad loadOwnPart(Node& root, const Volume& volume, const std::string& sceneFile,
-                        bool interactive, int part, int parts);
+/// Otherwise, when it reads an OME-Zarr image (no labels), reads part `part` of `parts`
+/// (KdVolumeSplit) with kOwnPartGhost voxels around it into the node
+/// (VolumeData::adoptLoaded); the rest of the grid holds the fill value. The render must then
+/// set VolumePartition::ownDataOnly. Otherwise reads nothing and says why. Relative file names
+/// resolve against `sceneFile`'s folder.
+OwnPartLoad loadOwnPart(Node& root, const std::string& sceneFile, int part, int parts);
 
 /// Gives the transfer functions that take the data's own range `range` (the whole volume's,
 /// agreed by the processes) as their dataRange, as one process reading it all would use.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <thread>
@@ -57,10 +58,15 @@ glm::dvec2 agreedRange(const OwnPartLoad& load) {
                                           : glm::dvec2(-32768.0, 32767.0);
 }
 
-/// The smallest value over the processes (VolumePartition::smallestOfAll).
-double smallestOfAll(double value) {
-    MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
-    return value;
+/// VolumePartition::fromSmallest: the values of the process with the smallest key.
+void fromSmallest(double key, double* values, int count) {
+    struct {
+        double key;
+        int rank;
+    } mine{std::isnan(key) ? HUGE_VAL : key, 0}, smallest{};
+    MPI_Comm_rank(MPI_COMM_WORLD, &mine.rank);
+    MPI_Allreduce(&mine, &smallest, 1, MPI_DOUBLE_INT, MPI_MINLOC, MPI_COMM_WORLD);
+    MPI_Bcast(values, count, MPI_DOUBLE, smallest.rank, MPI_COMM_WORLD);
 }
 
 /// Collective: whether any process's paged volume still waits for bricks, and every process
@@ -153,8 +159,7 @@ Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& option
     OwnPartLoad load;
     try {
         volume = splitVolumeOf(root, size);
-        if (volume && size > 1)
-            load = loadOwnPart(root, *volume, report.sceneFile, options.interactive, rank, size);
+        if (volume && size > 1) load = loadOwnPart(root, report.sceneFile, rank, size);
     } catch (const std::exception& e) {
         why = e.what();
     }
@@ -175,7 +180,7 @@ Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& option
         }
         RenderOptions partialOptions = options;
         partialOptions.volumePartial = true;
-        partialOptions.partition = {rank, size, smallestOfAll};
+        partialOptions.partition = {rank, size, load.loaded, fromSmallest};
         auto started = Clock::now();
         partial = renderer.render(root, partialOptions);
         mine.partialMilliseconds = millisecondsSince(started);

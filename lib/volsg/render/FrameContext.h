@@ -90,12 +90,20 @@ struct RenderDebug {
 struct VolumePartition {
     int part = 0;
     int parts = 1;
-    /// The smallest of the values every process passes (a collective: each process calls it
-    /// the same number of times in a frame). Where the processes must agree on something
-    /// their parts decide alone: a paged volume's finest drawn level sets the plane spacing
-    /// for all. Unset: this process's value.
-    std::function<double(double)> smallestOfAll;
-    double smallest(double value) const { return smallestOfAll ? smallestOfAll(value) : value; }
+    /// The process holds only its part's voxels and a ghost layer (viewer/OwnPartLoading):
+    /// its slabs end at the part's faces as at brick seams, and an error target's choice is
+    /// made on its part and agreed with the others (fromSmallest).
+    bool ownDataOnly = false;
+    /// A collective (each process calls it the same number of times in a frame): every
+    /// process passes a key and `count` values and receives the values of the process with
+    /// the smallest key (the lowest rank among equals). For what the processes must agree on
+    /// but decide from their own parts: a paged volume's finest drawn level, an error
+    /// target's costliest choice. Unset: the process's own values stand.
+    std::function<void(double key, double* values, int count)> fromSmallest;
+    double smallest(double value) const {
+        if (fromSmallest) fromSmallest(value, &value, 1);
+        return value;
+    }
 };
 
 /// The frame being drawn, as engines see it.

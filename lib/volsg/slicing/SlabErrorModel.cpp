@@ -185,6 +185,8 @@ struct SlabErrorModel::Impl {
     /// feature is crossed in less (its linearised v must not misplace the feature).
     double truthStep = 0.25;
     VolumeRenderMode mode = VolumeRenderMode::DVR;
+    /// The rays' and the lattice's box (local coordinates): the volume's, or a region of it.
+    glm::dvec3 regionMin{0.0}, regionMax{0.0};
 
     int rowAt(const glm::dvec3& p) const {
         return tagged ? int(table.tagRows()[std::size_t(grid.tag(p))]) : 0;
@@ -251,15 +253,18 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
     const double cone = dirIndex >= kDirections ? kWideConeTangent : kConeTangent;
     s->dir = d;
     const glm::dvec3 half = grid.half;
+    // The planes are laid over the whole box (as the slicer lays them) even where the rays
+    // cross only a region of it.
     const double depth = std::abs(d.x) * half.x + std::abs(d.y) * half.y + std::abs(d.z) * half.z;
     s->depthRange = {-depth, depth};
+    const glm::dvec3 lo3 = regionMin, hi3 = regionMax;
     const glm::dvec3 helper = std::abs(d.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 u = glm::normalize(glm::cross(d, helper));
     const glm::dvec3 w = glm::cross(d, u);
     glm::dvec2 lo(1e300), hi(-1e300);
     for (int c = 0; c < 8; ++c) {
-        const glm::dvec3 p((c & 1) ? half.x : -half.x, (c & 2) ? half.y : -half.y,
-                           (c & 4) ? half.z : -half.z);
+        const glm::dvec3 p((c & 1) ? hi3.x : lo3.x, (c & 2) ? hi3.y : lo3.y,
+                           (c & 4) ? hi3.z : lo3.z);
         const glm::dvec2 q(glm::dot(p, u), glm::dot(p, w));
         lo = glm::min(lo, q);
         hi = glm::max(hi, q);
@@ -288,10 +293,10 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
             double t0 = -1e300, t1 = 1e300;
             for (int a = 0; a < 3; ++a) {
                 if (std::abs(ray.dir[a]) < 1e-12) {
-                    if (std::abs(o[a]) > half[a]) t1 = -1e300;
+                    if (o[a] < lo3[a] || o[a] > hi3[a]) t1 = -1e300;
                     continue;
                 }
-                double ta = (-half[a] - o[a]) / ray.dir[a], tb = (half[a] - o[a]) / ray.dir[a];
+                double ta = (lo3[a] - o[a]) / ray.dir[a], tb = (hi3[a] - o[a]) / ray.dir[a];
                 if (ta > tb) std::swap(ta, tb);
                 t0 = std::max(t0, ta);
                 t1 = std::min(t1, tb);
@@ -560,13 +565,16 @@ void measureFunction(const TransferTable& table, int row, SignalNeeds& needs) {
 
 } // namespace
 
-SlabErrorModel::SlabErrorModel(const RayCastVolume& volume) : impl_(std::make_unique<Impl>()) {
+SlabErrorModel::SlabErrorModel(const RayCastVolume& volume, std::optional<ModelRegion> region)
+    : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     const VolumeGrid& g = *volume.data;
     m.grid.grid = &g;
     m.grid.dims = g.dimensions();
     m.grid.spacing = g.spacing();
     m.grid.half = 0.5 * g.extent();
+    m.regionMin = region ? glm::max(region->min, -m.grid.half) : -m.grid.half;
+    m.regionMax = region ? glm::min(region->max, m.grid.half) : m.grid.half;
     m.grid.strideY = std::size_t(m.grid.dims.x);
     m.grid.strideZ = std::size_t(m.grid.dims.x) * std::size_t(m.grid.dims.y);
     if (g.type() == VoxelType::Float) std::tie(m.grid.lowest, m.grid.highest) = g.minMax();
@@ -583,10 +591,17 @@ SlabErrorModel::SlabErrorModel(const RayCastVolume& volume) : impl_(std::make_un
     // |grad v| L0 on a lattice of about 20^3 voxels, where a table may give opacity.
     std::vector<double> gradients;
     int visible = 0, sampled = 0;
-    const glm::ivec3 step = glm::max(m.grid.dims / 20, glm::ivec3(1));
-    for (int k = 0; k < m.grid.dims.z; k += step.z)
-        for (int j = 0; j < m.grid.dims.y; j += step.y)
-            for (int i = 0; i < m.grid.dims.x; i += step.x) {
+    // The voxels whose centres lie in the region (all of them without one).
+    const glm::ivec3 first =
+        glm::clamp(glm::ivec3(glm::ceil((m.regionMin + m.grid.half) / m.grid.spacing - 0.5)),
+                   glm::ivec3(0), m.grid.dims - 1);
+    const glm::ivec3 last =
+        glm::clamp(glm::ivec3(glm::floor((m.regionMax + m.grid.half) / m.grid.spacing - 0.5)),
+                   first, m.grid.dims - 1);
+    const glm::ivec3 step = glm::max((last - first + 1) / 20, glm::ivec3(1));
+    for (int k = first.z; k <= last.z; k += step.z)
+        for (int j = first.y; j <= last.y; j += step.y)
+            for (int i = first.x; i <= last.x; i += step.x) {
                 const glm::dvec3 p = -m.grid.half + (glm::dvec3(i, j, k) + 0.5) * m.grid.spacing;
                 const int row = m.rowAt(p);
                 glm::dvec3 grad;

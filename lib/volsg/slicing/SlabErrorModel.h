@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -52,13 +53,21 @@ struct SignalNeeds {
     double samplesPerL0 = 0.0;
 };
 
+/// A box of the volume (local coordinates) the model's rays are confined to.
+struct ModelRegion {
+    glm::dvec3 min{0.0}, max{0.0};
+};
+
 class SlabErrorModel {
 public:
     static constexpr int kDirections = 96;
 
     /// Takes what the model needs of a volume: its data, tags, transfer functions and mode.
     /// Cheap (tables and a sample of voxels); rays are cast per direction when first asked.
-    explicit SlabErrorModel(const RayCastVolume& volume);
+    /// With a `region` (a sort-last process holding only its part: lib/volsg/sortlast), the
+    /// rays cross only that box, their slabs ending at its faces as the process's do, and the
+    /// data's needs are measured there; the planes stay laid over the whole box.
+    explicit SlabErrorModel(const RayCastVolume& volume, std::optional<ModelRegion> region = {});
     ~SlabErrorModel();
 
     const SignalNeeds& needs() const { return needs_; }

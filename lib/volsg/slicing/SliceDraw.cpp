@@ -187,10 +187,16 @@ void drawBrick(const BrickState& s, const Brick& b, const Program& program, cons
     program.set("uTexOrigin", glm::vec3(b.firstVoxel));
     program.set("uTexSize", glm::vec3(b.voxelCount));
     // The whole brick (b is), also under sort-last: every process's fragments are the ones a
-    // single process draws.
+    // single process draws; unless the process holds only its part (slabsEndAtPart).
     const glm::dvec3 half = plan.local.halfExtent;
-    program.set("uSlabMin", glm::vec3(plan.slabsEndAtBricks ? b.boxMin : -half));
-    program.set("uSlabMax", glm::vec3(plan.slabsEndAtBricks ? b.boxMax : half));
+    glm::dvec3 slabMin = plan.slabsEndAtBricks ? b.boxMin : -half;
+    glm::dvec3 slabMax = plan.slabsEndAtBricks ? b.boxMax : half;
+    if (plan.slabsEndAtBricks && plan.slabsEndAtPart) { // the part's faces too
+        slabMin = glm::max(slabMin, plan.partMin);
+        slabMax = glm::min(slabMax, plan.partMax);
+    }
+    program.set("uSlabMin", glm::vec3(slabMin));
+    program.set("uSlabMax", glm::vec3(slabMax));
     if (b.levelSpacing.x > 0.0) { // a paged brick: its level's voxels
         program.set("uInvSpacing", glm::vec3(1.0 / b.levelSpacing));
         program.set("uVoxelCount", glm::vec3(b.levelDimensions));

@@ -99,10 +99,11 @@ void cutSlices(VolumeTextures& v, const Brick& b, BrickState& s, const VolumeGri
 /// any level, where its region reaches the box's face), and with `seamsToo`
 /// (SlicePlan::slabsEndAtBricks) those between bricks. They stand for the rays no plane
 /// crosses within the box (or the brick). Sort-last: b is the part of brick `whole` in this
-/// process's part; the faces the part cuts through are not the brick's.
+/// process's part; the faces the part cuts through are not the brick's, unless `partSeams`
+/// (SlicePlan::slabsEndAtPart).
 void appendFrontFaces(const Brick& b, const Brick& whole, const glm::ivec3& grid,
-                      const glm::dvec3& halfExtent, bool seamsToo, const glm::dvec3& viewer,
-                      bool orthographic, std::vector<glm::vec3>& out) {
+                      const glm::dvec3& halfExtent, bool seamsToo, bool partSeams,
+                      const glm::dvec3& viewer, bool orthographic, std::vector<glm::vec3>& out) {
     for (int a = 0; a < 3; ++a)
         for (int side = 0; side < 2; ++side) {
             const bool wholeFace =
@@ -111,7 +112,8 @@ void appendFrontFaces(const Brick& b, const Brick& whole, const glm::ivec3& grid
                 b.levelSpacing.x > 0.0
                     ? (side == 0 ? b.boxMin[a] <= -halfExtent[a] : b.boxMax[a] >= halfExtent[a])
                     : (side == 0 ? b.index[a] == 0 : b.index[a] == grid[a] - 1);
-            if (!wholeFace || !(onBox || seamsToo)) continue;
+            // A face the part cuts through is a seam when slabs end at the part's faces.
+            if (wholeFace ? !(onBox || seamsToo) : !(seamsToo && partSeams)) continue;
             const double c = side == 0 ? b.boxMin[a] : b.boxMax[a];
             const bool facing = orthographic ? (side == 0 ? viewer[a] > 0.0 : viewer[a] < 0.0)
                                              : (side == 0 ? viewer[a] < c : viewer[a] > c);
@@ -137,7 +139,7 @@ void appendBoundingFaces(VolumeTextures& v, const Brick& b, const Brick& whole, 
     const LocalView& local = plan.local;
     s.faceFirst = GLint(v.vertices.size());
     appendFrontFaces(b, whole, v.layout.grid(), local.halfExtent, plan.slabsEndAtBricks,
-                     local.viewer, local.orthographic, v.vertices);
+                     plan.slabsEndAtPart, local.viewer, local.orthographic, v.vertices);
     for (const glm::dvec4& plane : plan.clipPlanes) {
         const glm::dvec3 n(plane);
         const bool entering = local.orthographic ? glm::dot(n, local.viewer) > 0.0

@@ -60,6 +60,9 @@ struct SlicePlan {
     /// Slabs end at the faces of their brick, whose front faces are drawn at seams too: the
     /// slab's samples then stay in the brick's texture (slabsEndAtBricks).
     bool slabsEndAtBricks = false;
+    /// Sort-last with the process holding only its part (VolumePartition::ownDataOnly): the
+    /// part's faces are seams too (slabs end there, and the faces facing the eye are drawn).
+    bool slabsEndAtPart = false;
 };
 
 /// Whether slabs end at brick faces: where the volume has several bricks, a fragment samples

@@ -82,6 +82,38 @@ SliceMethod prepareVolume(VolumeTextures& v, const SliceShared& shared, TextureS
     return m;
 }
 
+/// The box of this process's part when it holds only its part's voxels (sort-last,
+/// VolumePartition::ownDataOnly); none otherwise.
+std::optional<ModelRegion> ownPartRegion(const RayCastVolume& volume,
+                                         const VolumePartition& partition) {
+    if (partition.parts <= 1 || !partition.ownDataOnly) return std::nullopt;
+    const KdVolumeSplit split(volume.data->dimensions(), volume.data->spacing(), partition.parts);
+    const KdVolumeSplit::Part& part = split.part(partition.part);
+    if (part.empty) return ModelRegion{}; // a point: no rays, the cheapest choice
+    return ModelRegion{part.boxMin, part.boxMax};
+}
+
+/// Sort-last with each process judging its own part: all take the costliest of the processes'
+/// choices (the one the most demanding part needs), so every part meets the target and the
+/// plane layout is one.
+void agreeOnCostliest(QualityChoice& choice, const QualityView& view, const SlabErrorModel& model,
+                      const VolumePartition& partition) {
+    const SlabQuadrature& q = choice.quadrature;
+    const double cost = quadratureCost(q, view.depthL0, model.mode(), model.tagged());
+    double values[7] = {q.planeSpacingL0,          double(q.samplesPerPlane),
+                        double(q.preIntegrated),   double(q.peaks),
+                        double(q.refinePeaks),     choice.predictedRmse,
+                        double(choice.meetsTarget)};
+    if (partition.fromSmallest) partition.fromSmallest(-cost, values, 7);
+    choice.quadrature.planeSpacingL0 = values[0];
+    choice.quadrature.samplesPerPlane = int(values[1]);
+    choice.quadrature.preIntegrated = values[2] != 0.0;
+    choice.quadrature.peaks = values[3] != 0.0;
+    choice.quadrature.refinePeaks = values[4] != 0.0;
+    choice.predictedRmse = values[5];
+    choice.meetsTarget = values[6] != 0.0;
+}
+
 /// What a frame's quality was chosen for, and the model's prediction (SlicingStats).
 struct FrameQuality {
     bool predicted = false;
@@ -113,11 +145,14 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
                               frame.shapes.drawsLastFrame() > 0 || nearCutsBox;
     const double modelTarget = outsideModel ? 0.5 * target : target;
     const auto started = std::chrono::steady_clock::now();
+    // A sort-last process holding only its part judges the rays through its part.
+    const std::optional<ModelRegion> region = ownPartRegion(volume, frame.partition);
     if (!v.errorModel || v.errorModelKey != volume.transferKey ||
-        v.errorModelMode != int(volume.mode)) {
-        v.errorModel = std::make_unique<SlabErrorModel>(volume);
+        v.errorModelMode != int(volume.mode) || v.errorModelRegion != region.has_value()) {
+        v.errorModel = std::make_unique<SlabErrorModel>(volume, region);
         v.errorModelKey = volume.transferKey;
         v.errorModelMode = int(volume.mode);
+        v.errorModelRegion = region.has_value();
     }
     QualityRequest request;
     request.errorTarget = modelTarget;
@@ -134,6 +169,7 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
     request.refinePeaks = settings.refinePeaks;
     quality.view = qualityView(local, frame.view);
     quality.choice = chooseQuality(*v.errorModel, quality.view, request);
+    if (region) agreeOnCostliest(quality.choice, quality.view, *v.errorModel, frame.partition);
     quality.predicted = true;
     quality.target = target;
 
@@ -238,8 +274,10 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     drawn.paging = paging;
     plan.clipPlanes = localClipPlanes(volume);
     plan.rows = planRows(v, plan, chosen);
+    // A process holding only its part ends slabs at the part's faces as at seams.
+    plan.slabsEndAtPart = frame.partition.parts > 1 && frame.partition.ownDataOnly;
     plan.slabsEndAtBricks = slabsEndAtBricks(
-        plan.method, v.layout.bricks().size(),
+        plan.method, plan.slabsEndAtPart ? 2 : v.layout.bricks().size(),
         plan.layout.spacing * glm::length(plan.local.eyeToLocal3 * glm::dvec3(0.0, 0.0, 1.0)),
         plan.local.L0);
     partitionVolume(volume, frame.partition, plan, drawn);

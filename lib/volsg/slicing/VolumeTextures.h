@@ -87,6 +87,7 @@ struct VolumeTextures {
     std::unique_ptr<SlabErrorModel> errorModel;
     std::uint64_t errorModelKey = 0;
     int errorModelMode = -1;
+    bool errorModelRegion = false; ///< made for a sort-last process's own part
 
     bool hasPreIntegration = false;
     std::vector<PreIntegrationTable> preIntegration; ///< one per transfer-table row
