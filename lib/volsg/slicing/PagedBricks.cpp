@@ -298,7 +298,16 @@ PagingStats preparePaged(FrameContext& frame, const Object& owner, std::uint64_t
                                               : std::numeric_limits<double>::infinity();
         finest = frame.partition.smallest(finest);
         if (!std::isfinite(finest)) finest = stats.finestDrawnVoxel;
-        settings.planeSpacingL0 = (frame.interactive ? 1.0 : 0.5) * finest / local.L0;
+        // An error target's choice was made on the stand-in (settingsForFrame; in level 0's
+        // L0): the finest level drawn gets as many planes per voxel of its own as the stand-in
+        // got per voxel of its own (finer detail needs no fewer). Without a target, the fixed
+        // rule: two planes per voxel, one while interacting.
+        const double standInVoxel = volume.data->smallestSpacing();
+        const double perVoxel = settings.planeSpacingL0 > 0.0
+                                    ? settings.planeSpacingL0 * local.L0 / standInVoxel
+                                : frame.interactive ? 1.0
+                                                    : 0.5;
+        settings.planeSpacingL0 = perVoxel * finest / local.L0;
     }
     return stats;
 }

@@ -565,7 +565,8 @@ void measureFunction(const TransferTable& table, int row, SignalNeeds& needs) {
 
 } // namespace
 
-SlabErrorModel::SlabErrorModel(const RayCastVolume& volume, std::optional<ModelRegion> region)
+SlabErrorModel::SlabErrorModel(const RayCastVolume& volume, std::optional<ModelRegion> region,
+                               double opacityUnit)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     const VolumeGrid& g = *volume.data;
@@ -583,7 +584,7 @@ SlabErrorModel::SlabErrorModel(const RayCastVolume& volume, std::optional<ModelR
     m.tagged = volume.tags && m.table.rows() > 1;
     m.grid.tags = m.tagged ? volume.tags.get() : nullptr;
     tagged_ = m.tagged;
-    m.L0 = L0_ = g.smallestSpacing();
+    m.L0 = L0_ = opacityUnit > 0.0 ? opacityUnit : g.smallestSpacing();
     m.mode = mode_ = volume.mode;
 
     for (int r = 0; r < m.table.rows(); ++r)

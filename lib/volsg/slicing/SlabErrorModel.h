@@ -67,7 +67,10 @@ public:
     /// With a `region` (a sort-last process holding only its part: lib/volsg/sortlast), the
     /// rays cross only that box, their slabs ending at its faces as the process's do, and the
     /// data's needs are measured there; the planes stay laid over the whole box.
-    explicit SlabErrorModel(const RayCastVolume& volume, std::optional<ModelRegion> region = {});
+    /// `opacityUnit` (local units): the length the transfer functions' opacity is per, when
+    /// not the grid's own L0 (a paged volume's stand-in: level 0's voxel).
+    explicit SlabErrorModel(const RayCastVolume& volume, std::optional<ModelRegion> region = {},
+                            double opacityUnit = 0.0);
     ~SlabErrorModel();
 
     const SignalNeeds& needs() const { return needs_; }

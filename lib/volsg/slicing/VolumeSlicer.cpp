@@ -6,6 +6,7 @@
 #include <memory>
 
 #include <volsg/core/Error.h>
+#include <volsg/paging/PagedVolume.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
 #include <volsg/slicing/PagedBricks.h>
@@ -131,9 +132,9 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
                                  const SlicingSettings& settings, FrameQuality& quality) {
     const double target =
         frame.interactive ? settings.interactiveErrorTarget : settings.errorTarget;
-    // A paged volume's planes follow its finest drawn level (preparePaged, PagedBricks.h).
-    if (!(target > 0.0) || volume.mode == VolumeRenderMode::AVERAGE || settings.nearest ||
-        volume.paged)
+    // A paged volume's model is made on its stand-in (the whole volume at a coarser level);
+    // preparePaged carries the choice to the finest level drawn (PagedBricks.h).
+    if (!(target > 0.0) || volume.mode == VolumeRenderMode::AVERAGE || settings.nearest)
         return settings;
     // What the model leaves out (BoxClip, clip planes, planeOpacity, opaque geometry ending
     // rays, a near plane cutting the box: the camera inside) adds boundaries inside slabs and
@@ -149,7 +150,8 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
     const std::optional<ModelRegion> region = ownPartRegion(volume, frame.partition);
     if (!v.errorModel || v.errorModelKey != volume.transferKey ||
         v.errorModelMode != int(volume.mode) || v.errorModelRegion != region.has_value()) {
-        v.errorModel = std::make_unique<SlabErrorModel>(volume, region);
+        v.errorModel = std::make_unique<SlabErrorModel>(
+            volume, region, volume.paged ? volume.paged->finestSpacing() : 0.0);
         v.errorModelKey = volume.transferKey;
         v.errorModelMode = int(volume.mode);
         v.errorModelRegion = region.has_value();
@@ -167,7 +169,10 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
     if (settings.fixedPreIntegrated) request.preIntegrated = settings.preIntegrated;
     if (settings.fixedMipPeaks) request.peaks = settings.mipPeaks;
     request.refinePeaks = settings.refinePeaks;
-    quality.view = qualityView(local, frame.view);
+    // A paged volume's opacity unit is level 0's voxel, not its stand-in's (preparePaged).
+    LocalView modelled = local;
+    if (volume.paged) modelled.L0 = volume.paged->finestSpacing();
+    quality.view = qualityView(modelled, frame.view);
     quality.choice = chooseQuality(*v.errorModel, quality.view, request);
     if (region) agreeOnCostliest(quality.choice, quality.view, *v.errorModel, frame.partition);
     quality.predicted = true;

@@ -1,0 +1,102 @@
+// A paged volume under the Volume's error target: the quadrature is chosen by the error model
+// on the stand-in and carried to the finest level drawn, and the converged image meets the
+// target against the reference ray caster of the full-resolution volume (in memory).
+#include "slicing/SlicingTestSupport.h"
+#include "support/TempDir.h"
+
+#include <fstream>
+
+#include <volsg/actions/SearchAction.h>
+#include <volsg/io/SceneReader.h>
+#include <volsg/nodes/Volume.h>
+#include <volsg/nodes/VolumeData.h>
+#include <volsg/paging/PagedVolume.h>
+#include <volsg/volumeio/OmeZarrPyramid.h>
+
+using namespace volsg;
+using namespace volsg::test;
+
+namespace {
+
+/// The scene around a 64^3 pyramid of 16^3 chunks; `dataFields` pages it or not.
+std::string sceneText(const std::string& dataFields, const std::string& volumeFields) {
+    return "#Inventor V2.1 ascii\nSeparator {\n"
+           "  PerspectiveCamera { position 0.5 0.3 2.6 heightAngle 0.75 nearDistance 0.5 "
+           "farDistance 8 }\n"
+           "  Transform { rotation 1 1 0 0.5 }\n"
+           "  VolumeData { fileName \"ml.zarr\" " +
+           dataFields +
+           " }\n"
+           "  TransferFunction { red [ 0 1, 1 0.3 ] green [ 0 0.2, 1 0.9 ] blue [ 0 0.1, 1 1 ]\n"
+           "    alpha [ 0 0, 0.3 0, 0.6 0.3, 1 0.8 ] }\n"
+           "  Volume { " +
+           volumeFields + " }\n}\n";
+}
+
+ref_ptr<Node> readScene(const TempDir& dir, const std::string& name, const std::string& text) {
+    const std::string file = dir.file(name);
+    std::ofstream(file) << text;
+    return volsg::readScene(file);
+}
+
+Volume& volumeOf(Node& root) {
+    const std::vector<Node*> found = findAll(root, Volume::classType(), true);
+    REQUIRE(found.size() == 1);
+    return *static_cast<Volume*>(found.front());
+}
+
+} // namespace
+
+TEST_CASE_FIXTURE(GlFixture, "a paged volume meets its error target with planes chosen on the "
+                             "stand-in") {
+    const TempDir dir("volsg-paged-target");
+    PyramidOptions pyramid;
+    pyramid.chunk = 16;
+    writeOmeZarrPyramid(*makeMarschnerLobb(64, VoxelType::UByte), dir.file("ml.zarr"), pyramid);
+
+    RenderOptions options;
+    options.width = options.height = 96;
+    // memoryBudget 1 (MiB) keeps a stand-in of at most 64 KiB: level 1 (32^3), so the model
+    // sees half the resolution the converged frame draws.
+    ref_ptr<Node> paged =
+        readScene(dir, "paged.iv", sceneText("paging ON memoryBudget 1", "lodPixels 0.25"));
+    Volume& volume = volumeOf(*paged);
+    Image image;
+    for (int frame = 0; frame < 200; ++frame) {
+        image = renderer.render(*paged, options);
+        if (volume.slicingStats().paging.converged) break;
+        const std::vector<Node*> data = findAll(*paged, VolumeData::classType(), true);
+        static_cast<VolumeData*>(data.front())->pagedVolume()->cache().waitIdle(50);
+    }
+    const SlicingStats stats = volume.slicingStats();
+    REQUIRE(stats.paging.paged);
+    REQUIRE(stats.paging.converged);
+    CHECK(stats.paging.finestLevel == 0);
+    REQUIRE(stats.errorTarget > 0.0);
+    CHECK(stats.predictedRmse <= stats.errorTarget);
+
+    // The reference: the same file read whole, by the CPU ray caster.
+    ref_ptr<Node> whole = readScene(dir, "whole.iv", sceneText("paging OFF", ""));
+    const Image reference = renderReference(*whole, options);
+    const double measured = difference(image, reference).rmse;
+    // The fixed rule it replaced: two planes per voxel of level 0, one sample each.
+    ref_ptr<Node> fixed = readScene(
+        dir, "fixed.iv", sceneText("paging ON memoryBudget 1", "lodPixels 0.25 errorTarget 0"));
+    Image fixedImage;
+    for (int frame = 0; frame < 200; ++frame) {
+        fixedImage = renderer.render(*fixed, options);
+        if (volumeOf(*fixed).slicingStats().paging.converged) break;
+        const std::vector<Node*> data = findAll(*fixed, VolumeData::classType(), true);
+        static_cast<VolumeData*>(data.front())->pagedVolume()->cache().waitIdle(50);
+    }
+    keepImage(image, "paged-target");
+    keepImage(reference, "paged-target-reference");
+    MESSAGE("paged at errorTarget 0.5: "
+            << stats.planes << " planes x " << stats.samplesPerPlane << " samples, predicted "
+            << stats.predictedRmse / k8Bit << "/255, measured " << measured / k8Bit
+            << "/255; the fixed rule: " << volumeOf(*fixed).slicingStats().planes
+            << " planes, measured " << difference(fixedImage, reference).rmse / k8Bit << "/255");
+    CHECK(measured <= stats.errorTarget);
+    // Fewer planes than the fixed rule draws.
+    CHECK(stats.planes < volumeOf(*fixed).slicingStats().planes / 2);
+}
