@@ -39,17 +39,20 @@ using Clock = std::chrono::steady_clock;
 const char* usage =
     "usage: volsg-ooc generate OUT.zarr [--side N] [--chunk C]\n"
     "       volsg-ooc bench PYRAMID.zarr [--size WxH] [--frames N] [--memory MiB]\n"
-    "                 [--texture MiB] [--crop N] [--pixels P] [--images DIR]\n"
+    "                 [--texture MiB] [--crop N] [--pixels P] [--error-target T]\n"
+    "                 [--images DIR]\n"
     "  generate  a UByte N^3 volume (default 2048: 8 GiB) of gyroid sheets in a sphere, written\n"
     "            plane by plane as an OME-Zarr pyramid of C^3 chunks (default 64), zstd\n"
     "  bench     pages the pyramid (VolumeData paging ON, memoryBudget --memory, default\n"
     "            1024; Volume textureBudget --texture, default 512; lodPixels --pixels,\n"
-    "            default 1) and prints: the first image's time; per frame of an orbit of\n"
+    "            default 1; errorTarget --error-target, default the Volume's, 0: the fixed\n"
+    "            rules) and prints: the first image's time; per frame of an orbit of\n"
     "            --frames (default 36) interactive frames its time, bricks, levels, I/O and\n"
     "            memory; the time to converge; peak resident memory against the budgets;\n"
     "            and the converged still image against the in-memory render of a region\n"
     "            that fits memory (a central --crop^3 voxels under a BoxClip, default 256;\n"
-    "            the whole volume when level 0 has at most 512 MiB). --images writes PNGs\n"
+    "            the whole volume when level 0 has at most 512 MiB; drawn in memory at a\n"
+    "            tenth of the target, and at the target for its time). --images writes PNGs\n"
     "%s";
 
 double millisecondsSince(Clock::time_point start) {
@@ -148,6 +151,7 @@ struct BenchOptions {
     int width = 512, height = 512, frames = 36, crop = 256;
     std::uint32_t memoryMiB = 1024, textureMiB = 512;
     double pixels = 1.0;
+    double errorTarget = -1.0; ///< the paged Volume's (1/255); < 0: the Volume's default
 };
 
 const char* kTransferFunction = R"(TransferFunction {
@@ -223,14 +227,17 @@ int bench(const BenchOptions& o) {
                                              "{ errorTarget 0 } }"),
                         tiny);
     }
+    const double target =
+        o.errorTarget >= 0.0 ? o.errorTarget : double(Volume::create()->errorTarget());
     const auto opened = Clock::now();
     char sceneText[2048];
     std::snprintf(sceneText, sizeof sceneText,
                   "#Inventor V2.1 ascii\nSeparator { VolumeData { fileName \"%s\" paging ON "
                   "memoryBudget %u } %s "
-                  "Volume { textureBudget %llu lodPixels %g errorTarget 0 } }",
+                  "Volume { textureBudget %llu lodPixels %g errorTarget %g } }",
                   std::filesystem::absolute(o.pyramid).c_str(), o.memoryMiB, kTransferFunction,
-                  static_cast<unsigned long long>(std::uint64_t(o.textureMiB) << 20), o.pixels);
+                  static_cast<unsigned long long>(std::uint64_t(o.textureMiB) << 20), o.pixels,
+                  target);
     ref_ptr<Node> root = readSceneFromString(sceneText);
     auto* data = static_cast<VolumeData*>(root->children()->at(0).get());
     auto* volume = static_cast<Volume*>(root->children()->at(2).get());
@@ -314,6 +321,11 @@ int bench(const BenchOptions& o) {
         cameraAt(cropCentre + 1.7 * cropExtent * glm::dvec3(0.55, 0.35, 0.76), cropCentre, size);
     const Image pagedCrop = converge(renderer, *root, options, frames, convergeMs);
     const PagingStats pagedStats = volume->slicingStats().paging;
+    // A still frame of the converged region, everything resident: the paged frame's cost.
+    options.interactive = false;
+    const auto again = Clock::now();
+    renderer.render(*root, options);
+    const double lastFrameMs = millisecondsSince(again);
     std::printf("region %d x %d x %d from voxel %d %d %d: paged converged in %d frames, %.0f "
                 "ms, levels %d..%d, worst voxel %.2f px\n",
                 cropCount.x, cropCount.y, cropCount.z, cropFirst.x, cropFirst.y, cropFirst.z,
@@ -335,18 +347,30 @@ int bench(const BenchOptions& o) {
     auto regionData = VolumeData::create();
     regionData->adoptLoaded(region, "");
     auto regionVolume = Volume::create();
-    regionVolume->errorTarget = 0.0f;
     inMemory->addChild(move);
     inMemory->addChild(regionData);
     inMemory->addChild(root->children()->at(1)); // the same TransferFunction
     inMemory->addChild(regionVolume);
     options.interactive = false;
+    // In memory at the paged frame's own target, for its time (the second frame: the first
+    // uploads the region)...
+    regionVolume->errorTarget = float(target);
+    renderer.render(*inMemory, options);
+    const auto inMemoryStarted = Clock::now();
+    const Image sameTarget = renderer.render(*inMemory, options);
+    const double inMemoryMs = millisecondsSince(inMemoryStarted);
+    // ...and at a tenth of it (the fixed rules without a target), the image to compare with.
+    regionVolume->errorTarget = float(0.1 * target);
     const Image want = renderer.render(*inMemory, options);
-    double rmse = 0.0, max = 0.0;
+    double rmse = 0.0, max = 0.0, sameRmse = 0.0, sameMax = 0.0;
     difference(pagedCrop, want, rmse, max);
-    std::printf("converged vs in-memory render of the region: RMSE %.3f/255, max %.1f/255 "
-                "(the Volume's default error target: %.2f/255)\n",
-                rmse * 255.0, max * 255.0, double(Volume::create()->errorTarget()));
+    difference(sameTarget, want, sameRmse, sameMax);
+    std::printf("region in memory: %.0f ms a still frame at errorTarget %.2f/255; paged: %.0f ms "
+                "(converged, a still frame)\n",
+                inMemoryMs, target, lastFrameMs);
+    std::printf("against the in-memory render at errorTarget %.3g/255: paged converged RMSE "
+                "%.3f/255, max %.1f/255; in memory at %.2f/255: RMSE %.3f/255, max %.1f/255\n",
+                0.1 * target, rmse * 255.0, max * 255.0, target, sameRmse * 255.0, sameMax * 255.0);
     if (!o.images.empty()) {
         writePng(o.images + "/ooc-region-paged.png", pagedCrop);
         writePng(o.images + "/ooc-region-in-memory.png", want);
@@ -409,6 +433,11 @@ int run(cli::Arguments& args) {
             o.crop = args.intValue(option, 1, 65536);
         } else if (option == "--pixels") {
             o.pixels = std::stod(args.value(option));
+        } else if (option == "--error-target") {
+            o.errorTarget = std::stod(args.value(option));
+            if (!(o.errorTarget >= 0.0 && o.errorTarget <= 255.0))
+                throw Error("--error-target wants 0..255 (1/255 units), got " +
+                            std::to_string(o.errorTarget));
         } else if (option == "--images") {
             o.images = args.value(option);
         } else {

@@ -60,8 +60,8 @@ std::string describe(const Volume& v) {
                       s.meetsTarget ? "" : ", not met", s.coverage * 100.0, s.qualityMilliseconds);
         out += line;
     } else {
-        out += s.paging.paged ? ", no prediction (paged: 2 planes per voxel of the finest level "
-                                "drawn)"
+        out += s.paging.paged ? ", no prediction (paged without a target: 2 planes per voxel of "
+                                "the finest level drawn)"
                               : ", no prediction (no target, AVERAGE or NEAREST)";
     }
     if (s.paging.paged) out += "; " + describePaging(s.paging);
