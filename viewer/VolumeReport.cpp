@@ -75,7 +75,13 @@ std::string describe(const ShearWarpVolume& v) {
                   "slice step %d, predicted RMSE %.3g/255 (floor %.3g/255 at step 1; target "
                   "%.3g/255)",
                   q.sliceStep, q.predictedRmse * 255.0, q.floorRmse * 255.0, q.target * 255.0);
-    return q.predicted ? std::string(line) : std::string("no prediction yet");
+    std::string out = q.predicted ? std::string(line) : std::string("no prediction yet");
+    if (q.pagedLevel >= 0) {
+        std::snprintf(line, sizeof line, "; paged: level %d read whole (the view asks for %d)%s",
+                      q.pagedLevel, q.wantedLevel, q.refining ? ", a finer level loading" : "");
+        out += line;
+    }
+    return out;
 }
 
 } // namespace
@@ -97,7 +103,10 @@ std::vector<std::string> volumeQualityLines(Node& root) {
 bool volumesRefining(Node& root) {
     bool refining = false;
     forEachVolume(root, [&](Node& n) {
-        if (!n.isA<Volume>()) return;
+        if (n.isA<ShearWarpVolume>()) { // a paged volume's finer level read whole
+            refining = refining || static_cast<const ShearWarpVolume&>(n).lastQuality().refining;
+            return;
+        }
         const PagingStats& p = static_cast<const Volume&>(n).slicingStats().paging;
         refining = refining || (p.paged && !p.converged);
     });
@@ -107,7 +116,11 @@ bool volumesRefining(Node& root) {
 std::vector<std::string> pagingErrors(Node& root) {
     std::vector<std::string> out;
     forEachVolume(root, [&](Node& n) {
-        if (!n.isA<Volume>()) return;
+        if (n.isA<ShearWarpVolume>()) {
+            const std::string& e = static_cast<const ShearWarpVolume&>(n).lastQuality().levelError;
+            if (!e.empty()) out.push_back("a level unreadable, drawn coarser: " + e);
+            return;
+        }
         const PagingStats& p = static_cast<const Volume&>(n).slicingStats().paging;
         if (p.paged && !p.firstError.empty())
             out.push_back(std::to_string(p.loadFailures) +

@@ -80,15 +80,7 @@ PagedVolume::PagedVolume(const std::string& path, const PagedVolumeOptions& opti
                     path);
     for (int l = source_.levelCount() - 1; l >= standInLevel_; --l) {
         const glm::ivec3 d = source_.level(l).dimensions;
-        ref_ptr<VolumeGrid> grid = source_.readBox(l, glm::ivec3(0), d);
-        if (l == standInLevel_) {
-            // Its box is level 0's: an odd axis rounds up when halved, so the spacing shrinks
-            // by a fraction of a voxel instead.
-            grid->setSpacing(glm::dvec3(source_.level(0).dimensions) * source_.level(0).spacing /
-                             glm::dvec3(d));
-            grid->setGeometry(source_.geometry());
-        }
-        whole_[l] = grid;
+        whole_[l] = l == standInLevel_ ? readWholeLevel(l) : source_.readBox(l, glm::ivec3(0), d);
         wholeBytes_ += levelBytes(l);
     }
     cache_ = std::make_unique<BrickCache>(
@@ -104,7 +96,76 @@ PagedVolume::PagedVolume(const std::string& path, const PagedVolumeOptions& opti
 }
 
 PagedVolume::~PagedVolume() {
+    if (levelLoader_.joinable()) levelLoader_.join(); // it reads source_
     cache_.reset(); // the loaders read source_ and layout_: stop them first
+}
+
+std::uint64_t PagedVolume::levelBytes(int level) const {
+    const glm::ivec3 d = source_.level(level).dimensions;
+    return std::uint64_t(d.x) * std::uint64_t(d.y) * std::uint64_t(d.z) *
+           voxelTypeSize(source_.type());
+}
+
+ref_ptr<VolumeGrid> PagedVolume::readWholeLevel(int level) const {
+    const glm::ivec3 d = source_.level(level).dimensions;
+    ref_ptr<VolumeGrid> grid = source_.readBox(level, glm::ivec3(0), d);
+    // Its box is level 0's: an odd axis rounds up when halved, so the spacing shrinks by a
+    // fraction of a voxel instead.
+    grid->setSpacing(glm::dvec3(source_.level(0).dimensions) * source_.level(0).spacing /
+                     glm::dvec3(d));
+    grid->setGeometry(source_.geometry());
+    return grid;
+}
+
+std::uint64_t PagedVolume::wholeLevelBudget() const {
+    return cache_->stats().budgetBytes / 2;
+}
+
+std::string PagedVolume::wholeLevelError() const {
+    std::lock_guard<std::mutex> lock(levelMutex_);
+    return levelError_;
+}
+
+ref_ptr<const VolumeGrid> PagedVolume::wholeLevel(int wanted, int& drawn, bool& loading) {
+    wanted = std::clamp(wanted, 0, standInLevel_);
+    while (wanted < standInLevel_ && levelBytes(wanted) > wholeLevelBudget())
+        ++wanted;
+    std::lock_guard<std::mutex> lock(levelMutex_);
+    if (wanted == standInLevel_ || wanted == extraLevel_) {
+        drawn = wanted;
+        loading = false;
+        return wanted == extraLevel_ ? extraGrid_ : whole_.at(standInLevel_);
+    }
+    // Not held: load it (one level at a time; a level that failed is not tried again).
+    if (loadingLevel_ < 0 && levelError_.empty()) {
+        if (levelLoader_.joinable()) levelLoader_.join(); // the last load, finished
+        loadingLevel_ = wanted;
+        levelLoader_ = std::thread([this, wanted] {
+            ref_ptr<const VolumeGrid> grid;
+            std::string error;
+            try {
+                grid = readWholeLevel(wanted);
+            } catch (const std::exception& e) {
+                error = e.what();
+            }
+            std::lock_guard<std::mutex> done(levelMutex_);
+            loadingLevel_ = -1;
+            if (grid) {
+                extraGrid_ = grid; // the level held before goes
+                extraLevel_ = wanted;
+            } else {
+                levelError_ = error;
+            }
+        });
+    }
+    loading = loadingLevel_ >= 0;
+    // Meanwhile the finer of what is held.
+    if (extraGrid_ && extraLevel_ < standInLevel_) {
+        drawn = extraLevel_;
+        return extraGrid_;
+    }
+    drawn = standInLevel_;
+    return whole_.at(standInLevel_);
 }
 
 double PagedVolume::finestSpacing() const {

@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <volsg/paging/BrickCache.h>
@@ -61,6 +63,19 @@ public:
     /// the next ones in a later frame.
     void request(const std::vector<BrickKey>& wanted);
 
+    /// For renderers that need the volume whole (shear-warp, whose voxel lists are made from
+    /// one grid): the grid of level `wanted` when it is held, else the finest level held
+    /// whole (the stand-in at least) while `wanted` loads on a background thread. A level
+    /// wanted is first made coarser until it takes at most wholeLevelBudget(). `drawn` is the
+    /// level returned, `loading` whether a finer one is on its way. Its spacing makes its box
+    /// level 0's, as the stand-in's. Thread-safe; one level loads at a time, and the level
+    /// held before is let go when a new one arrives.
+    ref_ptr<const VolumeGrid> wholeLevel(int wanted, int& drawn, bool& loading);
+    /// Bytes a level read whole for wholeLevel may take: half of what the bricks may.
+    std::uint64_t wholeLevelBudget() const;
+    /// Why a level could not be read whole (empty if none failed); it is not tried again.
+    std::string wholeLevelError() const;
+
     BrickCache& cache() { return *cache_; }
     const BrickCache& cache() const { return *cache_; }
     /// Host bytes held now: bricks, reserved loads, decoded chunks, levels kept whole.
@@ -75,6 +90,16 @@ private:
     std::map<int, ref_ptr<const VolumeGrid>> whole_; ///< the stand-in and every level above it
     std::uint64_t wholeBytes_ = 0;
     std::unique_ptr<BrickCache> cache_;
+    /// wholeLevel's level beyond those kept whole, and its loader.
+    mutable std::mutex levelMutex_;
+    int extraLevel_ = -1;
+    ref_ptr<const VolumeGrid> extraGrid_;
+    int loadingLevel_ = -1;
+    std::string levelError_;
+    std::thread levelLoader_;
+    std::uint64_t levelBytes(int level) const;
+    /// A level read whole with its spacing making its box level 0's.
+    ref_ptr<VolumeGrid> readWholeLevel(int level) const;
 };
 
 } // namespace volsg

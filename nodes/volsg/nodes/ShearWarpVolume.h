@@ -4,6 +4,7 @@
 // state before it), drawing the VolumeData in scope by shear-warp on the CPU in the Volume pass.
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <volsg/fields/Fields.h>
@@ -81,6 +82,12 @@ public:
         bool predicted = false;
         int sliceStep = 1;
         double predictedRmse = 0.0, floorRmse = 0.0, target = 0.0;
+        /// A paged volume (lib/volsg/paging/README.md, "Shear-warp"): the pyramid level drawn,
+        /// read whole, the level the view asks for (its voxels at most a pixel, within the
+        /// memory budget), and whether a finer level is still loading. -1: not paged.
+        int pagedLevel = -1, wantedLevel = -1;
+        bool refining = false;
+        std::string levelError; ///< why the wanted level could not be read (it stays coarser)
     };
     const Quality& lastQuality() const { return quality_; }
     void setLastQuality(const Quality& q) { quality_ = q; }

@@ -8,6 +8,7 @@
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/VolumeData.h>
 #include <volsg/nodes/VolumeSeries.h>
+#include <volsg/paging/PagedVolume.h>
 #include <volsg/render/BuiltinRendering.h>
 #include <volsg/render/ImageCompositor.h>
 #include <volsg/render/RenderAction.h>
@@ -69,17 +70,53 @@ ShearWarpVolume::Quality predictQuality(ShearWarpVolume& node, const State& stat
     return q;
 }
 
+/// A paged volume's level for this view, read whole (shear-warp makes its voxel lists from one
+/// grid): the coarsest whose voxels project to at most a pixel (shear-warp's parallel
+/// projection), as fine as the memory budget allows, the stand-in while it loads. Null for a
+/// volume in memory.
+ref_ptr<const VolumeGrid> pagedLevelFor(const State& state, const RenderView& view,
+                                        ShearWarpVolume::Quality& quality) {
+    const VolumeData* data = state.nearestNode<VolumeData>();
+    if (!data || data->isA<VolumeSeries>()) return nullptr;
+    const std::shared_ptr<PagedVolume> paged = data->pagedVolume();
+    if (!paged) return nullptr;
+    const glm::dmat4 modelView = view.view * state.modelMatrix();
+    const double pixelsPerEyeUnit = 0.5 * std::abs(view.projection[1][1]) * view.height;
+    const PagedLayout& layout = paged->layout();
+    int wanted = 0;
+    for (int level = layout.levelCount() - 1; level >= 0; --level) {
+        const glm::dvec3 voxel = layout.spacingOf(level);
+        double eyeVoxel = 0.0;
+        for (int a = 0; a < 3; ++a)
+            eyeVoxel = std::max(eyeVoxel, voxel[a] * glm::length(glm::dvec3(modelView[a])));
+        if (eyeVoxel * pixelsPerEyeUnit <= 1.0) {
+            wanted = level;
+            break;
+        }
+    }
+    int drawn = 0;
+    bool loading = false;
+    ref_ptr<const VolumeGrid> grid = paged->wholeLevel(wanted, drawn, loading);
+    quality.pagedLevel = drawn;
+    quality.wantedLevel = wanted;
+    quality.refining = loading;
+    quality.levelError = paged->wholeLevelError();
+    return grid;
+}
+
 void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
     action.needFloatTarget();
     if (action.pass() != RenderPass::Volume) return;
     action.countVolumeInstance();
     const State& state = action.state();
-    std::vector<VolumeObject*> sources;
-    std::vector<ShearWarpObject> objects = gatherShearWarpObjects(node, state, &sources);
-    if (objects.empty()) return;
-
     FrameContext& frame = action.frame();
     const RenderView& rv = frame.view;
+    ShearWarpVolume::Quality paging;
+    const ref_ptr<const VolumeGrid> level = pagedLevelFor(state, rv, paging);
+    std::vector<VolumeObject*> sources;
+    std::vector<ShearWarpObject> objects = gatherShearWarpObjects(node, state, &sources, level);
+    if (objects.empty()) return;
+
     ShearWarpView view;
     view.modelView = rv.view * state.modelMatrix();
     view.projection = rv.projection;
@@ -90,7 +127,11 @@ void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
                            : InterObjectCompositing::DVR;
     view.threads = node.threads();
     view.valueSortedMip = node.valueSortedMip();
-    const ShearWarpVolume::Quality quality = predictQuality(node, state, objects, view, frame);
+    ShearWarpVolume::Quality quality = predictQuality(node, state, objects, view, frame);
+    quality.pagedLevel = paging.pagedLevel;
+    quality.wantedLevel = paging.wantedLevel;
+    quality.refining = paging.refining;
+    quality.levelError = paging.levelError;
     view.sliceStep = quality.sliceStep;
     view.simd = frame.debug.vectorKernels ? bestSimdLevel() : SimdLevel::Scalar;
     std::vector<SceneLight> lights;

@@ -85,7 +85,8 @@ std::vector<ObjectScope> scopesOf(ShearWarpVolume& node, const VolumeInScope& vo
 } // namespace
 
 std::vector<ShearWarpObject> gatherShearWarpObjects(ShearWarpVolume& node, const State& state,
-                                                    std::vector<VolumeObject*>* sources) {
+                                                    std::vector<VolumeObject*>* sources,
+                                                    ref_ptr<const VolumeGrid> levelGrid) {
     std::vector<ShearWarpObject> out;
     if (sources) sources->clear();
     const VolumeInScope volume = gatherScopeWithoutData(state);
@@ -97,7 +98,8 @@ std::vector<ShearWarpObject> gatherShearWarpObjects(ShearWarpVolume& node, const
     // A series hands out each step's lists from its step cache (which reads the grids).
     const VolumeSeries* series =
         data && data->isA<VolumeSeries>() ? static_cast<const VolumeSeries*>(data) : nullptr;
-    const ref_ptr<const VolumeGrid> grid = data && !series ? data->grid() : nullptr;
+    const ref_ptr<const VolumeGrid> grid =
+        data && !series ? (levelGrid ? levelGrid : data->grid()) : nullptr;
     if (!grid && !packed && !series) return out;
     const ref_ptr<const VolumeGrid> tags = data && !series ? data->tagGrid() : nullptr;
     const glm::dmat4& model = volume.model;

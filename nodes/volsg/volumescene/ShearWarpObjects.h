@@ -18,9 +18,11 @@ class VolumeObject;
 /// TransferFunctions, BoxClip, ClipPlanes above it: gatherVolumeInScope) and the state nodes
 /// among its children (each VolumeObject takes the state before it). Extracts (or reuses)
 /// voxel lists. `sources` receives the VolumeObject of each. Empty without VolumeData in scope
-/// (and without a voxelFile). Throws Error for an invalid TransferFunction.
+/// (and without a voxelFile). Throws Error for an invalid TransferFunction. `grid`, when
+/// given, replaces the VolumeData's grid (a paged volume's level read whole: the same box).
 std::vector<ShearWarpObject> gatherShearWarpObjects(ShearWarpVolume& node, const State& state,
-                                                    std::vector<VolumeObject*>* sources = nullptr);
+                                                    std::vector<VolumeObject*>* sources = nullptr,
+                                                    ref_ptr<const VolumeGrid> grid = nullptr);
 
 /// The reference ray caster's description of the node (ReferenceScene's bridge): one volume
 /// with a transfer function per object's tag (WHOLE objects: the default), MIP when every
