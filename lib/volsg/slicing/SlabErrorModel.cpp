@@ -168,7 +168,9 @@ void forEachSlab(const ModelRay& ray, const PlaneLayout& layout, int parts, Visi
         const double z = layout.depth(k);
         const double a = z - ray.t0 < ds ? ray.t0 : z - 0.5 * ds;
         const double b = ray.t1 - z < ds ? ray.t1 : z + 0.5 * ds;
-        visit(Slab{a, b, z, parts, false});
+        // As the shader: uSlabSamples per plane spacing, fewer on a slab cut shorter.
+        const int n = std::clamp(int(std::ceil((b - a) * parts / ds - 1e-3)), 1, parts);
+        visit(Slab{a, b, z, n, false});
     }
 }
 

@@ -494,11 +494,12 @@ void main() {
     if (thickness <= 0.0) discard;
     vec3 p = origin + dir * (0.5 * (back - front)); // the middle of the slab
     if (!uFacePass) p = vLocal; // (a plane's slab is sampled at the plane with one part)
-    // Samples along the slab: a plane's slab takes uSlabSamples; a face's sliver, shorter than
-    // a plane spacing, takes as many at the same spacing (at least one), so slivers near the
-    // silhouette are sampled as densely as the rest when slabs are thick.
+    // Samples along the slab: uSlabSamples over a plane spacing. A slab cut shorter (at the
+    // box's or a brick's faces) or a face's sliver takes as many at the same spacing (at least
+    // one): slivers near the silhouette are sampled as densely as the rest, and a slab cut by
+    // brick seams (slabsEndAtBricks) costs no more samples than the whole slab would.
     int parts = max(uSlabSamples, 1);
-    if (uFacePass) parts = clamp(int(ceil(thickness * float(parts) / ds - 1e-3)), 1, parts);
+    parts = clamp(int(ceil(thickness * float(parts) / ds - 1e-3)), 1, parts);
     // The ray's stretch through the volume around origin (a face's sliver is all of it).
     vec2 reach = uFacePass ? vec2(0.0, back) : vec2(tEnter, tExit);
 #ifdef LEAN
