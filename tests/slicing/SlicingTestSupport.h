@@ -22,6 +22,7 @@
 #include <volsg/reference/ReferenceRayCaster.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/Renderer.h>
+#include <volsg/slicing/PagedBricks.h>
 #include <volsg/slicing/VolumeSlicer.h>
 #include <volsg/volume/TestVolumes.h>
 #include <volsg/volume/TransferFunction1D.h>
@@ -67,6 +68,7 @@ public:
         v.clipPlanes.insert(v.clipPlanes.end(), planes.begin(), planes.end());
         std::vector<SceneLight> lights;
         action.lightsInScope(lights);
+        slicing::preparePagedGuard(v, node.settings); // as the Volume node does
         VolumeSlicer::draw(action.frame(), node, v, lights, node.settings, node.stats);
     }
 };

@@ -8,6 +8,7 @@
 #include <volsg/nodes/VolumeSeries.h>
 #include <volsg/render/BuiltinRendering.h>
 #include <volsg/render/RenderAction.h>
+#include <volsg/slicing/PagedBricks.h>
 #include <volsg/slicing/VolumeSlicer.h>
 #include <volsg/volumescene/ReferenceScene.h>
 #include <volsg/volumescene/VolumeInScope.h>
@@ -65,6 +66,7 @@ void renderVolume(RenderAction& action, Volume& node) {
     const double gathering =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
             .count();
+    slicing::preparePagedGuard(volume, settings);
     SlicingStats stats;
     VolumeSlicer::draw(frame, node, volume, lights, settings, stats);
     stats.cpuMilliseconds += gathering;
