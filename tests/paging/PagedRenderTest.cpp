@@ -103,6 +103,15 @@ ImageDifference pagedAgainstInMemory(Renderer& renderer, const std::string& fold
     CHECK(s.finestLevel == 0);
     CHECK(s.coarsestLevel == 0);
     CHECK(s.bricksDrawn >= 27); // seams along every axis
+    // The guard widens for lighting and pre-integration only; textures stay 16^3 either way
+    // (bricks of 14 cells, or 12 with the wide guard).
+    const SlicingStats& drawn = paged.volume->slicingStats();
+    const bool wide = paged.volume->lighting() || paged.volume->preIntegrated();
+    CHECK(paged.data->pagedVolume()->wideGuard() == wide);
+    CHECK(paged.data->pagedVolume()->layout().brickCells() == (wide ? 12 : 14));
+    CHECK(drawn.brickTexels == glm::ivec3(16));
+    CHECK(drawn.preIntegrated == paged.volume->preIntegrated());
+    CHECK(inMemory.volume->slicingStats().preIntegrated == paged.volume->preIntegrated());
     keepImage(got, name + "-paged");
     keepImage(want, name + "-in-memory");
     Image magnified(got.width, got.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
