@@ -159,3 +159,38 @@ TEST_CASE("destroying the cache with a long queue and slow loads returns promptl
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     CHECK(seconds < 2.0); // 1000 loads of 20 ms on 3 threads would take 7 s
 }
+
+TEST_CASE("clear waits for the loads under way, then drops the bricks held and the failures") {
+    std::atomic<int> loads{0};
+    BrickCache cache(
+        1 << 20, 2,
+        [&](const BrickKey& key) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            ++loads;
+            if (key.index.x == 1) throw Error("unreadable");
+            return makeBrick(key);
+        },
+        sizeOf);
+    cache.request(keys(8));
+    REQUIRE(cache.waitIdle(5000));
+    CHECK(cache.stats().resident == 7);
+    CHECK(cache.failed({0, {1, 0, 0}}));
+    cache.request(keys(64)); // some under way when cleared, the rest dropped
+    cache.clear();
+    const BrickCacheStats s = cache.stats();
+    CHECK(s.resident == 0);
+    CHECK(s.loading == 0);
+    CHECK(s.queued == 0);
+    CHECK(s.residentBytes == 0);
+    CHECK(s.loadingBytes == 0);
+    CHECK(cache.idle());
+    CHECK_FALSE(cache.failed({0, {1, 0, 0}}));
+    const int before = loads;
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));
+    CHECK(loads == before); // idle until asked again
+    cache.request(keys(4));
+    REQUIRE(cache.waitIdle(5000));
+    CHECK(cache.holds({0, {3, 0, 0}}));
+    CHECK(cache.failed({0, {1, 0, 0}})); // tried again
+    CHECK(cache.stats().resident == 3);
+}

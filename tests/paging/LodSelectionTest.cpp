@@ -201,3 +201,29 @@ TEST_CASE("drawn bricks come back to front along every ray from the eye") {
         }
     }
 }
+
+TEST_CASE("with reach 1 a brick's texture also holds what central differences read") {
+    const PagedLayout narrow = oddLayout();
+    std::vector<PagedLevel> levels;
+    for (int l = 0; l < narrow.levelCount(); ++l)
+        levels.push_back(narrow.level(l));
+    const PagedLayout wide(levels, narrow.spacing(), narrow.brickCells(), 1);
+    CHECK(wide.reach() == 1);
+    for (int l = 0; l < wide.levelCount(); ++l) {
+        const glm::ivec3 n = wide.bricksOf(l);
+        const glm::ivec3 dimensions = wide.level(l).dimensions;
+        for (int x = 0; x < n.x; ++x) {
+            const BrickKey key{l, {x, n.y / 2, n.z - 1}};
+            glm::ivec3 first, count, narrowFirst, narrowCount;
+            wide.texels(key, first, count);
+            narrow.texels(key, narrowFirst, narrowCount);
+            // One voxel more each side (a sample one voxel from the region's end reads it),
+            // but never beyond the level, which one texture of it clamps alike.
+            for (int a = 0; a < 3; ++a) {
+                CHECK(first[a] == std::max(0, narrowFirst[a] - 1));
+                CHECK(first[a] + count[a] ==
+                      std::min(dimensions[a], narrowFirst[a] + narrowCount[a] + 1));
+            }
+        }
+    }
+}

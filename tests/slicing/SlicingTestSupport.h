@@ -22,6 +22,7 @@
 #include <volsg/reference/ReferenceRayCaster.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/Renderer.h>
+#include <volsg/slicing/PagedBricks.h>
 #include <volsg/slicing/VolumeSlicer.h>
 #include <volsg/volume/TestVolumes.h>
 #include <volsg/volume/TransferFunction1D.h>

@@ -65,6 +65,19 @@ void BrickCache::request(std::vector<BrickKey> wanted) {
     settled_.notify_all();
 }
 
+void BrickCache::clear() {
+    std::unique_lock lock(mutex_);
+    queue_.clear();
+    next_ = 0;
+    settled_.wait(lock, [&] { return loading_.empty(); });
+    held_.clear();
+    recent_.clear();
+    failed_.clear();
+    stats_.residentBytes = 0;
+    wake_.notify_all(); // loaders waiting for room re-check the (empty) list
+    settled_.notify_all();
+}
+
 bool BrickCache::takeable(std::size_t& at) const {
     while (at < queue_.size()) {
         const BrickKey& key = queue_[at];

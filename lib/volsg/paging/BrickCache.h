@@ -73,6 +73,11 @@ public:
     /// The bricks wanted now, most urgent first; replaces the previous list.
     void request(std::vector<BrickKey> wanted);
 
+    /// Drops the wanted list, waits for the loads under way, then drops every brick held and
+    /// the record of failures (the caller's keys may name other bricks from now on). The
+    /// loaders stay idle until the next request().
+    void clear();
+
     /// Nothing queued and nothing loading.
     bool idle() const;
     /// Waits until idle() or `milliseconds` pass; returns idle().

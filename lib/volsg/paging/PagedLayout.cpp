@@ -8,9 +8,11 @@
 
 namespace volsg {
 
-PagedLayout::PagedLayout(std::vector<PagedLevel> levels, glm::dvec3 spacing, int brickCells)
-    : levels_(std::move(levels)), spacing_(spacing), cells_(brickCells) {
-    if (levels_.empty() || cells_ < 1) throw Error("a paged volume needs levels and bricks");
+PagedLayout::PagedLayout(std::vector<PagedLevel> levels, glm::dvec3 spacing, int brickCells,
+                         int reach)
+    : levels_(std::move(levels)), spacing_(spacing), cells_(brickCells), reach_(reach) {
+    if (levels_.empty() || cells_ < 1 || reach_ < 0)
+        throw Error("a paged volume needs levels and bricks");
 }
 
 glm::ivec3 PagedLayout::bricksOf(int l) const {
@@ -56,9 +58,11 @@ void PagedLayout::texels(const BrickKey& key, glm::ivec3& first, glm::ivec3& cou
     const PagedLevel& lv = level(key.level);
     for (int a = 0; a < 3; ++a) {
         const glm::dvec2 s = span(key.level, a, key.index[a]) / double(lv.scale[a]);
-        // Trilinear sampling at u reads the voxels whose centres i + 0.5 lie around it.
-        const int lo = std::max(0, int(std::floor(s.x - 0.5)));
-        const int hi = std::min(lv.dimensions[a] - 1, int(std::floor(s.y - 0.5)) + 1);
+        // Trilinear sampling at u reads the voxels whose centres i + 0.5 lie around it; a
+        // sample at u +- reach those `reach` further out. Clamped at the level's faces, as one
+        // texture of the level clamps.
+        const int lo = std::max(0, int(std::floor(s.x - 0.5)) - reach_);
+        const int hi = std::min(lv.dimensions[a] - 1, int(std::floor(s.y - 0.5)) + 1 + reach_);
         first[a] = lo;
         count[a] = std::max(1, hi - lo + 1);
     }

@@ -26,19 +26,22 @@ struct PagedLevel {
 /// brick takes the rest of the finer level), whose regions tile its region exactly. Its
 /// texture holds the level's voxels that trilinear sampling of its region reads: the voxel
 /// centres around it, one guard voxel beyond each inner face, so neighbouring bricks of a level
-/// sample the same voxels at their seam.
+/// sample the same voxels at their seam; and `reach` voxels more on each side, for drawing
+/// that samples around its points (lighting's central differences, one voxel either side).
 ///
 /// A level-l voxel's centre is at u = (i + 0.5) S: the halving writers put a coarse voxel at
 /// the mean of the centres of the finer voxels it reduces.
 class PagedLayout {
 public:
     PagedLayout() = default;
-    /// `levels[0]` the finest; `spacing` level 0's voxel size (local units).
-    PagedLayout(std::vector<PagedLevel> levels, glm::dvec3 spacing, int brickCells);
+    /// `levels[0]` the finest; `spacing` level 0's voxel size (local units); `reach` the
+    /// voxels a texture holds beyond those trilinear sampling of its region reads, each side.
+    PagedLayout(std::vector<PagedLevel> levels, glm::dvec3 spacing, int brickCells, int reach = 0);
 
     int levelCount() const { return int(levels_.size()); }
     const PagedLevel& level(int l) const { return levels_[std::size_t(l)]; }
     int brickCells() const { return cells_; }
+    int reach() const { return reach_; }
     glm::dvec3 spacing() const { return spacing_; } ///< level 0's
     glm::dvec3 halfExtent() const {
         return 0.5 * glm::dvec3(levels_.front().dimensions) * spacing_;
@@ -73,6 +76,7 @@ private:
     std::vector<PagedLevel> levels_;
     glm::dvec3 spacing_{1.0};
     int cells_ = 64;
+    int reach_ = 0;
 };
 
 } // namespace volsg

@@ -13,20 +13,21 @@ namespace volsg {
 
 namespace {
 
-/// The bricks' edge: level 0's chunk edge less the two guard voxels, so that a texture is
-/// the chunk's size (64^3 for chunks of 64): llvmpipe pads each texture row to 64 bytes, and a
-/// 66-texel R16 row would take 192 bytes for 132 (the memory budget would be a fiction). A
-/// brick then reads up to 8 chunks; the chunk cache shares them with its neighbours.
-int brickCellsOf(const PyramidSource& source) {
+/// The bricks' edge: level 0's chunk edge less the guard voxels (two; four when `reach` is 1),
+/// so that a texture is the chunk's size (64^3 for chunks of 64): llvmpipe pads each texture
+/// row to 64 bytes, and a 66-texel R16 row would take 192 bytes for 132 (the memory budget
+/// would be a fiction). A brick then reads up to 8 chunks; the chunk cache shares them with
+/// its neighbours. Chunks under 16 voxels make 16^3 textures all the same.
+int brickCellsOf(const PyramidSource& source, int reach) {
     const glm::ivec3 chunk = source.level(0).chunk;
-    return std::clamp(std::max({chunk.x, chunk.y, chunk.z}) - 2, 14, 254);
+    return std::clamp(std::max({chunk.x, chunk.y, chunk.z}), 16, 256) - 2 - 2 * reach;
 }
 
-PagedLayout layoutOf(const PyramidSource& source) {
+PagedLayout layoutOf(const PyramidSource& source, int reach) {
     std::vector<PagedLevel> levels;
     for (int l = 0; l < source.levelCount(); ++l)
         levels.push_back({source.level(l).dimensions, source.level(l).scale});
-    return PagedLayout(levels, source.level(0).spacing, brickCellsOf(source));
+    return PagedLayout(levels, source.level(0).spacing, brickCellsOf(source, reach), reach);
 }
 
 /// A brick cut from a level held whole.
@@ -47,7 +48,7 @@ HostBrick cutBrick(const VolumeGrid& level, glm::ivec3 first, glm::ivec3 count) 
 } // namespace
 
 PagedVolume::PagedVolume(const std::string& path, const PagedVolumeOptions& options)
-    : options_(options), source_(path, options.chunkCacheBytes), layout_(layoutOf(source_)) {
+    : options_(options), source_(path, options.chunkCacheBytes), layout_(layoutOf(source_, 0)) {
 #if defined(__GLIBC__)
     // Bricks and chunks (64^3 voxels: 256 KiB and more) are made on the loader threads and
     // freed on others, for ever. glibc raises its mmap threshold after the first such free,
@@ -166,6 +167,12 @@ ref_ptr<const VolumeGrid> PagedVolume::wholeLevel(int wanted, int& drawn, bool& 
     }
     drawn = standInLevel_;
     return whole_.at(standInLevel_);
+}
+
+void PagedVolume::widenGuard() {
+    if (wideGuard()) return;
+    cache_->clear(); // the loaders read the layout: idle them first
+    layout_ = layoutOf(source_, 1);
 }
 
 double PagedVolume::finestSpacing() const {

@@ -31,7 +31,7 @@ struct PagedVolumeOptions {
 /// A pyramid opened for paging. The levels from the stand-in up are read whole when it opens
 /// (the first image never waits for more); finer bricks load on the cache's threads when a
 /// frame wants them. Brick edge: level 0's chunk edge (largest axis) less 2, so that a brick's
-/// texture with its guard voxels is the size of a chunk.
+/// texture with its guard voxels is the size of a chunk (less 4 once the guard is wide).
 class PagedVolume {
 public:
     /// Opens `path` (PyramidSource's errors); an Error when the budget cannot hold the levels
@@ -75,6 +75,20 @@ public:
     std::uint64_t wholeLevelBudget() const;
     /// Why a level could not be read whole (empty if none failed); it is not tried again.
     std::string wholeLevelError() const;
+
+    /// Gives every brick a second guard voxel beyond each inner face (PagedLayout::reach 1),
+    /// for a Volume that samples around its points: lighting's central differences read one
+    /// voxel either side of a point, past the first guard voxel at seams, where a brick's
+    /// texture would clamp (seams in the image). Once wide, for good: the PagedVolume is
+    /// shared by every Volume of its VolumeData, which cannot know when it is opened how they
+    /// draw it, and a lit and an unlit Volume would reload each other's bricks every frame if
+    /// the guard followed the one drawing (the wide guard serves both: trilinear sampling
+    /// never reads the extra layer). The bricks held are dropped (waiting for the loads under
+    /// way): their voxels, and the octree (bricks of 2 cells fewer, so a texture stays the
+    /// size of a chunk), change; textures made of the narrow ones are the caller's to drop
+    /// (the slicer keys them by wideGuard()). Not while a frame uses layout().
+    void widenGuard();
+    bool wideGuard() const { return layout_.reach() > 0; }
 
     BrickCache& cache() { return *cache_; }
     const BrickCache& cache() const { return *cache_; }

@@ -14,6 +14,12 @@
 
 namespace volsg::slicing {
 
+void preparePagedGuard(const RayCastVolume& volume, const SlicingSettings& settings) {
+    if (volume.paged && volume.mode == VolumeRenderMode::DVR &&
+        (settings.lighting || settings.preIntegrated))
+        volume.paged->widenGuard();
+}
+
 namespace {
 
 /// Texture bytes a frame may upload for bricks new to the GPU: the first frame and the

@@ -23,6 +23,15 @@ namespace slicing {
 /// Texture bytes a paged volume takes when its Volume sets no textureBudget.
 constexpr std::uint64_t kDefaultPagedTextureBudget = std::uint64_t(512) << 20;
 
+/// Before VolumeSlicer::draw of a paged volume (the Volume node calls it, as must whoever
+/// draws a RayCastVolume with `paged` directly): widens its bricks' guard
+/// (PagedVolume::widenGuard) when the frame samples around its points, as the slicer's own
+/// bricks get a guard voxel for (prepareVolume): lighting's central differences, one voxel
+/// either side, and pre-integration's slab ends (half a plane spacing on: past the narrow
+/// guard only for oblique rays at one plane per voxel). DVR only: no other mode does either;
+/// tags are not paged.
+void preparePagedGuard(const RayCastVolume& volume, const SlicingSettings& settings);
+
 /// Which brick each texture slot (an entry of VolumeTextures::bricks) holds, kept across
 /// frames in the render cache beside the volume's textures.
 struct PagedSlots {

@@ -260,6 +260,8 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     if (frame.pass != RenderPass::Volume) return;
     const auto started = std::chrono::steady_clock::now();
     checkVolume(volume);
+    // Before the textures' key, which a paged volume's guard is part of.
+    preparePagedGuard(volume, settings);
     SliceShared& shared = sliceSharedOf(frame);
     const std::uint64_t key = textureKeyOf(volume);
     VolumeTextures& v = frame.cache.get<VolumeTextures>(owner, key);

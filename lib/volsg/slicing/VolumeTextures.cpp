@@ -7,6 +7,8 @@
 #include <utility>
 
 #include <volsg/core/Error.h>
+#include <volsg/core/KeyMixing.h>
+#include <volsg/paging/PagedVolume.h>
 #include <volsg/render/RenderCache.h>
 #include <volsg/slicing/GridMeasures.h>
 #include <volsg/slicing/SliceShared.h>
@@ -14,8 +16,12 @@
 namespace volsg::slicing {
 
 std::uint64_t textureKeyOf(const RayCastVolume& volume) {
-    return std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())) ^
-           (std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.tags.get())) << 1);
+    const std::uint64_t key =
+        std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())) ^
+        (std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.tags.get())) << 1);
+    // A paged volume whose guard widened has other bricks (PagedVolume::widenGuard): its
+    // textures start afresh, as new data's do.
+    return volume.paged && volume.paged->wideGuard() ? mixKey(key, 1) : key;
 }
 
 void adoptGrid(RenderCache& cache, const Object& owner, std::uint64_t key, VolumeTextures& v,

@@ -116,7 +116,7 @@ struct VolumeTextures {
 // VolumeTextures.cpp: the per-frame preparation, each step doing nothing when up to date.
 
 /// The cache key of a volume's textures: its grids (new data starts a fresh cache, and the old
-/// one is dropped after the frame).
+/// one is dropped after the frame), and a paged volume's guard (PagedVolume::wideGuard).
 std::uint64_t textureKeyOf(const RayCastVolume& volume);
 /// Takes over what was made for this grid before its first frame: the bricks staged while the
 /// previous step showed (waited for), and that step's textures to refill.
