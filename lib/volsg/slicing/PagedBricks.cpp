@@ -9,6 +9,7 @@
 #include <volsg/paging/LodSelection.h>
 #include <volsg/paging/PagedVolume.h>
 #include <volsg/slicing/BrickTexels.h>
+#include <volsg/slicing/EmptyCells.h>
 #include <volsg/slicing/SliceShared.h>
 #include <volsg/sortlast/KdVolumeSplit.h>
 
@@ -90,6 +91,10 @@ void upload(VolumeTextures& v, std::size_t i, const HostBrick& host, std::uint64
     s.resident = true;
     s.dataMin = host.minimum;
     s.dataMax = host.maximum;
+    // Its empty-space cells, so that its slices leave out the air it holds (cutBricks).
+    s.cells = std::make_shared<EmptyCells>();
+    s.cells->measure(grid, nullptr, v.finiteMin, v.finiteMax);
+    s.cellsTableKey = ~std::uint64_t(0);
     s.mayEmit = !v.hasTable || v.table.mayEmit(s.dataMin, s.dataMax, false, 0, 0);
     v.residentBytes += bytes;
     ++v.totals.brickUploads;

@@ -34,11 +34,13 @@ glm::dvec2 nearFar(const glm::dmat4& p, bool orthographic) {
 /// point; half a slab, along the longest ray of the view, with several parts or MIP's
 /// crossings. -1 when that is too far for rows to leave anything out (a wide view from close
 /// by).
-int rowReachOf(const SlicePlan& plan, bool mipPeaks) {
+/// How far (local units) a fragment's samples reach beyond its point: 0 for one sample at the
+/// point, -1 where slabs reach too far to be worth bounding (a wide view from close by).
+double sampleReachLocal(const SlicePlan& plan, bool mipPeaks) {
     const LocalView& local = plan.local;
     const Mode mode = plan.method.mode;
     const bool onePoint = plan.method.slabSamples == 1 && (mode == kDvr || !mipPeaks);
-    if (onePoint) return 0;
+    if (onePoint) return 0.0;
     double cosMin = 1.0; // of the angle between the view axis and the longest ray
     if (!local.orthographic)
         for (int c = 0; c < 8; ++c) {
@@ -48,12 +50,54 @@ int rowReachOf(const SlicePlan& plan, bool mipPeaks) {
             const glm::dvec3 eye = glm::dvec3(local.modelView * glm::dvec4(corner, 1.0));
             cosMin = std::min(cosMin, -eye.z / std::max(glm::length(eye), 1e-300));
         }
-    if (cosMin <= 0.25) return -1; // a wide view from close by: slabs reach too far
+    if (cosMin <= 0.25) return -1.0; // a wide view from close by: slabs reach too far
     double localPerEye = 0.0;
     for (int a = 0; a < 3; ++a)
         localPerEye = std::max(localPerEye, glm::length(local.eyeToLocal3[a]));
-    const double halfSlabVoxels = 0.5 * plan.layout.spacing / cosMin * localPerEye / local.L0;
-    return int(std::ceil(halfSlabVoxels / EmptyCells::kCellSize));
+    return 0.5 * plan.layout.spacing / cosMin * localPerEye;
+}
+
+int rowReachOf(const SlicePlan& plan, bool mipPeaks) {
+    const double reach = sampleReachLocal(plan, mipPeaks);
+    if (reach <= 0.0) return int(reach);
+    return int(std::ceil(reach / plan.local.L0 / EmptyCells::kCellSize));
+}
+
+/// A paged brick's slices cut to the box of its cells that may emit (its own EmptyCells,
+/// classified for this frame's table), grown by the samples' reach: the air it holds makes
+/// no fragments. Slabs and faces keep the brick's box (what lies between is transparent).
+/// False when no cell may emit.
+bool emittingBox(BrickState& s, const Brick& b, const VolumeTextures& v, const SlicePlan& plan,
+                 glm::dvec3& lo, glm::dvec3& hi) {
+    const bool maximum = plan.method.mode == kMip;
+    if (s.cellsTableKey != v.tableKey || s.cellsMaximum != maximum) {
+        s.cells->classify(v.table, false, maximum);
+        s.cellsTableKey = v.tableKey;
+        s.cellsMaximum = maximum;
+    }
+    const glm::ivec3 n = s.cells->cells();
+    const std::vector<std::uint8_t>& flags = s.cells->flags();
+    glm::ivec3 first(n), last(-1);
+    for (int z = 0; z < n.z; ++z)
+        for (int y = 0; y < n.y; ++y)
+            for (int x = 0; x < n.x; ++x)
+                if (flags[std::size_t(x) +
+                          std::size_t(n.x) *
+                              (std::size_t(y) + std::size_t(n.y) * std::size_t(z))]) {
+                    first = glm::min(first, glm::ivec3(x, y, z));
+                    last = glm::max(last, glm::ivec3(x, y, z));
+                }
+    if (last.x < 0) return false;
+    // Cell c spans the brick's voxel coordinates [8c, 8c + 8] (its voxels and the layer
+    // around them that trilinear samples read); voxel coordinate u of the brick's texture is
+    // at local (firstVoxel + u) levelSpacing - halfExtent.
+    constexpr double C = EmptyCells::kCellSize;
+    const glm::dvec3 origin = glm::dvec3(b.firstVoxel) * b.levelSpacing - plan.local.halfExtent;
+    lo = origin + glm::dvec3(first) * C * b.levelSpacing - plan.rows.pagedReach;
+    hi = origin + glm::dvec3(last + 1) * C * b.levelSpacing + plan.rows.pagedReach;
+    lo = glm::max(lo, b.boxMin);
+    hi = glm::min(hi, b.boxMax);
+    return glm::all(glm::lessThan(lo, hi));
 }
 
 /// Each row costs a plane cut per plane and a draw: with many planes the rows grow (group x
@@ -239,6 +283,12 @@ RowPlan planRows(VolumeTextures& v, const SlicePlan& plan, const SlicingSettings
             v.rowsTableKey = v.cellTableKey;
         }
     }
+    // A paged volume's bricks cut their slices to their own emitting cells, where the
+    // in-memory slicer's rows are exact (the same modes; see prepareVolume's skipCells).
+    const Mode mode = plan.method.mode;
+    if (v.layout.explicitBricks() && settings.skipEmptyCells && !plan.method.tagged &&
+        ((mode == kDvr && !plan.method.preIntegrated) || mode == kMip))
+        rows.pagedReach = sampleReachLocal(plan, settings.mipPeaks);
     const LocalView& local = plan.local;
     const glm::dvec3 towardsVolume = local.orthographic ? local.viewer : -local.viewer; // centred
     rows.axis = CellRows::axisFor(towardsVolume);
@@ -270,7 +320,17 @@ void cutBricks(VolumeTextures& v, const VolumeGrid& grid, const SlicePlan& plan,
             ++drawn.bricksSkipped;
             continue;
         }
-        cutSlices(v, b, s, grid, plan, drawn);
+        if (plan.rows.pagedReach >= 0.0 && s.cells && b.levelSpacing.x > 0.0) {
+            Brick emitting = b;
+            if (!emittingBox(s, b, v, plan, emitting.boxMin, emitting.boxMax)) {
+                ++drawn.bricksSkipped;
+                continue;
+            }
+            if (emitting.boxMin != b.boxMin || emitting.boxMax != b.boxMax) ++drawn.bricksTrimmed;
+            cutSlices(v, emitting, s, grid, plan, drawn);
+        } else {
+            cutSlices(v, b, s, grid, plan, drawn);
+        }
         appendBoundingFaces(v, b, whole, s, plan);
     }
 }

@@ -44,6 +44,9 @@ struct RowPlan {
     int reach = -1; ///< how far (cells) a fragment's samples reach; -1: whole bricks, no rows
     int axis = 0;   ///< the axis rows run along
     int group = 1;  ///< cells across a row, each way
+    /// A paged volume: how far (local units) a fragment's samples reach beyond its point when
+    /// its bricks' slices are cut to their emitting cells (cutBricks); < 0: not cut.
+    double pagedReach = -1.0;
 };
 
 /// One frame's plan, filled stage by stage before anything is drawn.

@@ -19,6 +19,7 @@ struct SlicingStats {
     int bricksTotal = 0;            ///< bricks the volume is split into (1 when it fits whole)
     int bricksDrawn = 0;            ///< bricks sliced and drawn
     int bricksSkipped = 0;          ///< bricks empty under the current transfer functions
+    int bricksTrimmed = 0;          ///< paged bricks whose slices were cut to their emitting cells
     int bricksResident = 0;         ///< bricks whose textures are on the GPU after the frame
     std::size_t textureBytes = 0;   ///< bytes of the resident 3D textures (data and tags)
     glm::ivec3 brickGrid{0};        ///< bricks along x, y, z

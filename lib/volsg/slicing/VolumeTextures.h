@@ -51,6 +51,11 @@ struct BrickState {
     std::vector<CellRow> rows;
     std::vector<GLint> rowFirst;
     std::vector<GLsizei> rowCount;
+    /// A paged brick's own empty-space cells (measured at upload, PagedBricks.cpp): its slices
+    /// are cut to the box of the cells that may emit (emittingBox).
+    std::shared_ptr<EmptyCells> cells;
+    std::uint64_t cellsTableKey = ~std::uint64_t(0); ///< the table `cells` was classified for
+    bool cellsMaximum = false;                       ///< classified for MIP
 };
 
 /// Per volume (node and grid): bricks, tables and geometry, kept across frames.
