@@ -302,6 +302,31 @@ TEST_CASE("a scene too large for the camera made to view it all is refused namin
     }
 }
 
+// Found by fuzz-scenegraph: an AsciiText of long strings (a mesh of millions of vertices) as
+// a dragger's part under a USE chain of 256 instances drew for minutes (each instance is
+// drawn again). Shapes are bounded as a frame total of vertex indices.
+TEST_CASE("shapes are bounded as a frame total of drawn vertices") {
+    OSMesaContext context;
+    // 3D text of 4000 characters (about 240,000 indices) under 2^11 instances.
+    const std::string shape = "AsciiText { string \"" + std::string(4000, 'W') + "\" }";
+    std::string text =
+        kHeader + "Separator {\n" + kOrtho + "\nDEF S0 Separator { " + shape + " }\n";
+    text += doublingChain(11);
+    text += "}\n";
+    const Outcome o = renderBoth(text, false);
+    CAPTURE(o.gl);
+    CHECK(o.gl.rfind("hostile.iv:", 0) == 0);
+    CHECK(o.gl.find("Separator") != std::string::npos); // the one replaying its cache
+    CHECK(o.gl.find("shape vertices in one frame") != std::string::npos);
+    // 2^6 instances of the same text draw.
+    std::string small =
+        kHeader + "Separator {\n" + kOrtho + "\nDEF S0 Separator { " + shape + " }\n";
+    small += doublingChain(6);
+    small += "}\n";
+    const Outcome drawn = renderBoth(small, false);
+    CHECK(drawn.gl.empty());
+}
+
 // Found by fuzz-scenegraph: a Text2 of 100,000 characters under a USE chain of 4096 instances
 // laid out 400 million characters in one frame (each instance is laid out again).
 TEST_CASE("screen text is bounded as a frame total of characters") {

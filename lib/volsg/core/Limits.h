@@ -27,6 +27,10 @@ inline constexpr std::uint64_t maxVolumeInstances = 256;
 /// Most screen-text (Text2) characters one frame may lay out, counting every USE: each
 /// instance is laid out again (16 screens full of 8-pixel characters at 3840x2160).
 inline constexpr std::uint64_t maxFrameTextGlyphs = std::uint64_t(1) << 21;
+/// Most vertex indices the shapes of one frame may draw, counting every USE (each instance is
+/// drawn again) and each pass: 2^28, some 90 million triangles, minutes of a software
+/// rasteriser's time (a 317 x 317 grid of Coin-tessellated spheres draws 126 million).
+inline constexpr std::uint64_t maxFrameShapeIndices = std::uint64_t(1) << 28;
 /// Most children of one node.
 inline constexpr std::size_t maxSceneChildren = std::size_t(1) << 20;
 /// Most values in one multiple-value field (MFFloat, MFVec3f, MFNode, ...).
