@@ -137,8 +137,6 @@ struct FrameContext {
     std::size_t coarserShapes = 0;
     /// Screen-text characters laid out so far in this frame (limits::maxFrameTextGlyphs).
     std::uint64_t textGlyphs = 0;
-    /// Shape vertex indices drawn so far in this frame (limits::maxFrameShapeIndices).
-    std::uint64_t shapeIndices = 0;
     /// Which part of the volumes this process draws (sort-last; parts 1: all of them).
     VolumePartition partition{};
 };

@@ -1,3 +1,5 @@
+#include <volsg/core/Error.h>
+#include <volsg/core/Limits.h>
 #include <volsg/fields/Values.h>
 #include <volsg/render/GpuMesh.h>
 #include <volsg/render/ShapeRenderer.h>
@@ -115,6 +117,7 @@ void ShapeRenderer::beginFrame(const RenderView& view) {
     transparentQueue_.clear();
     drawsLastFrame_ = 0;
     vertexLitLastFrame_ = litLastFrame_ = submittedMeshBytes_ = 0;
+    submittedIndices_ = 0;
     batchesLastFrame_ = batchedShapesLastFrame_ = 0;
     scopes_.clear();
     batches_.clear();
@@ -143,6 +146,11 @@ void ShapeRenderer::endFrame() {
 
 void ShapeRenderer::submit(const FrameContext& frame, const GpuMesh& gpu, const ShapeLook& look) {
     if (gpu.indexCount == 0 || look.style == ShapeLook::Style::Invisible) return;
+    // Every instance and pass counts (a shape drawn directly or replayed from a render cache).
+    submittedIndices_ += std::uint64_t(gpu.indexCount);
+    if (submittedIndices_ > limits::maxFrameShapeIndices)
+        throw Error("more than " + std::to_string(limits::maxFrameShapeIndices) +
+                    " shape vertices in one frame (every USE of a shape draws it again)");
     if (frame.pass == RenderPass::Opaque) submittedMeshBytes_ += gpu.bytes(); // once a frame
     const bool transparent = look.material.transparency > 0.0f || gpu.hasTranslucentColors;
     if (frame.pass == RenderPass::Opaque && !transparent && batching_) {

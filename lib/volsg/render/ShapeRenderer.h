@@ -267,6 +267,7 @@ private:
     bool batching_ = true;
     RenderDebug::Lighting lighting_ = RenderDebug::Lighting::Automatic;
     std::size_t vertexLitLastFrame_ = 0, litLastFrame_ = 0, submittedMeshBytes_ = 0;
+    std::uint64_t submittedIndices_ = 0; ///< this frame's, against limits::maxFrameShapeIndices
     std::vector<Scope> scopes_;
     std::vector<Batch> batches_;
     std::unordered_map<std::uint64_t, std::size_t> batchIndex_; ///< key hash -> batches_

@@ -53,13 +53,6 @@ void RenderAction::countTextGlyphs(std::size_t glyphs) {
                     "again)");
 }
 
-void RenderAction::countShapeIndices(std::uint64_t indices) {
-    frame_.shapeIndices += indices;
-    if (frame_.shapeIndices > limits::maxFrameShapeIndices)
-        throw Error("more than " + std::to_string(limits::maxFrameShapeIndices) +
-                    " shape vertices in one frame (every USE of a shape draws it again)");
-}
-
 void RenderAction::lightsInScope(std::vector<SceneLight>& out) const {
     out.clear();
     if (frame_.view.headlight) {

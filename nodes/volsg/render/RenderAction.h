@@ -39,9 +39,6 @@ public:
     /// Counts one more volume drawn in this frame; throws Error past limits::maxVolumeInstances
     /// (each volume costs a whole pass over its data: 100,000 USEs of one would never end).
     void countVolumeInstance();
-    /// Adds a shape instance's vertex indices to the frame's total; throws Error past
-    /// limits::maxFrameShapeIndices.
-    void countShapeIndices(std::uint64_t indices);
     /// Counts `glyphs` more screen-text characters laid out in this frame; throws Error past
     /// limits::maxFrameTextGlyphs (a long Text2 USEd thousands of times would never end).
     void countTextGlyphs(std::size_t glyphs);

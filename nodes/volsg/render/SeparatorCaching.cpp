@@ -75,7 +75,6 @@ void replay(RenderAction& action, const SeparatorCache& cache, bool transparent)
         look.lights = lights;
         look.clipPlanes = clipPlanes;
         const GpuMesh& mesh = r.detail ? r.detail->chooseFor(frame, look.model, *r.mesh) : *r.mesh;
-        action.countShapeIndices(std::uint64_t(mesh.indexCount)); // as renderShape counts
         frame.shapes.submit(frame, mesh, look);
         ++frame.replayedShapes;
     }

@@ -143,7 +143,6 @@ void renderShape(RenderAction& action, Shape& shape) {
     if (frame.recording && scope.complexity && scope.complexity->type() == Complexity::SCREEN_SPACE)
         frame.recording->cacheable = false;
     if (gpu.indexCount == 0) return;
-    action.countShapeIndices(std::uint64_t(gpu.indexCount));
 
     // Scratch kept across shapes: gathering allocates nothing per shape.
     thread_local std::vector<SceneLight> lights;
