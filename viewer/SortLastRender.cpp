@@ -32,7 +32,9 @@ double millisecondsSince(Clock::time_point start) {
 
 /// What one process did, gathered on rank 0 for --mpi-timing.
 struct RankTimes {
-    double opaqueMilliseconds = 0.0;  ///< rank 0's opaque image
+    double opaqueMilliseconds = 0.0;  ///< its share of the opaque shapes, read back
+    double opaqueShapes = 0.0;        ///< the opaque shapes it drew (of the scene's)
+    double depthCompositeMilliseconds = 0.0; ///< the opaque images' depth composite
     double partialMilliseconds = 0.0; ///< the partial image, read back
     double voxels = 0.0;              ///< voxels its part spans
     double position = 0.0;            ///< its place front to back
@@ -114,12 +116,14 @@ void printTiming(const std::vector<RankTimes>& ranks, const std::vector<Composit
                     kOwnPartGhost);
     else if (ranks.size() > 1)
         std::printf("  every process read the whole volume: %s\n", load.whyNot.c_str());
-    std::printf("  rank  position  voxels  read voxels  read ms  partial ms  opaque ms\n");
+    std::printf("  rank  position  voxels  read voxels  read ms  partial ms  opaque ms  "
+                "opaque shapes  depth composite ms\n");
     for (std::size_t r = 0; r < ranks.size(); ++r)
-        std::printf("  %4zu  %8d  %6.3gM  %10.3gM  %7.1f  %10.1f  %9.1f\n", r,
+        std::printf("  %4zu  %8d  %6.3gM  %10.3gM  %7.1f  %10.1f  %9.1f  %13d  %18.2f\n", r,
                     int(ranks[r].position), ranks[r].voxels / 1e6, ranks[r].voxelsRead / 1e6,
                     ranks[r].readMilliseconds, ranks[r].partialMilliseconds,
-                    ranks[r].opaqueMilliseconds);
+                    ranks[r].opaqueMilliseconds, int(ranks[r].opaqueShapes),
+                    ranks[r].depthCompositeMilliseconds);
     if (ranks.front().paged > 0.0) {
         std::printf("  rank  frames  bricks paged in  MB paged in  MB held\n");
         for (std::size_t r = 0; r < ranks.size(); ++r)
@@ -169,18 +173,41 @@ Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& option
     // Every process loaded its part, or none did (the same scene and options decide it).
     if (load.loaded && load.needsRange) useDataRange(root, agreedRange(load));
 
+    // The background and the opaque shapes, what the volume parts composite onto: each
+    // process draws its share of the shapes with depth, and the depth composite gives every
+    // process the whole (its depth stops that process's part of the volume).
+    std::vector<float> opaqueDepth;
+    int drewOpaque = 0;
     try {
-        if (rank == 0) {
-            // The background and the opaque shapes: what the volume parts composite onto.
-            RenderOptions opaqueOptions = options;
-            opaqueOptions.opaqueOnly = true;
-            const auto started = Clock::now();
-            opaque = renderer.render(root, opaqueOptions);
-            mine.opaqueMilliseconds = millisecondsSince(started);
-        }
+        RenderOptions opaqueOptions = options;
+        opaqueOptions.opaqueOnly = true;
+        opaqueOptions.shapeShareIndex = rank;
+        opaqueOptions.shapeShareCount = size;
+        const auto started = Clock::now();
+        renderer.render(root, opaqueOptions, opaque);
+        opaqueDepth = renderer.readWindowDepth();
+        mine.opaqueMilliseconds = millisecondsSince(started);
+        const RenderStats& stats = renderer.stats();
+        mine.opaqueShapes = double(stats.opaqueShapes - stats.sharedOutShapes);
+        drewOpaque = stats.shapeDraws > 0 ? 1 : 0;
+    } catch (const std::exception& e) {
+        why = e.what();
+    }
+    agreeOnFailure(mpi, !why.empty(), why);
+    if (report.timing) MPI_Barrier(MPI_COMM_WORLD);
+    std::vector<SurfacePixel> surfaces = surfacePixels(opaque.pixels, opaqueDepth);
+    mine.depthCompositeMilliseconds = compositeNearestEverywhere(surfaces, MPI_COMM_WORLD);
+    splitSurfacePixels(surfaces, opaque.pixels, opaqueDepth);
+    // Volumes treat a frame with opaque draws apart (the error model's target halves), so the
+    // partials are told whether any process drew one, as one process would know.
+    MPI_Allreduce(MPI_IN_PLACE, &drewOpaque, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (!drewOpaque) opaqueDepth.clear();
+
+    try {
         RenderOptions partialOptions = options;
         partialOptions.volumePartial = true;
         partialOptions.partition = {rank, size, load.loaded, fromSmallest};
+        partialOptions.opaqueDepth = &opaqueDepth;
         auto started = Clock::now();
         partial = renderer.render(root, partialOptions);
         mine.partialMilliseconds = millisecondsSince(started);

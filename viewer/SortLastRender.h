@@ -1,6 +1,6 @@
 #pragma once
-// volsg-render across MPI processes (sort-last): each renders its part of the volume, rank 0
-// composites the parts over its opaque image. lib/volsg/sortlast/README.md.
+// volsg-render across MPI processes (sort-last): each renders its share of the opaque shapes
+// and its part of the volume; rank 0 composites the parts over the opaque image. lib/volsg/sortlast/README.md.
 
 #include <string>
 
@@ -30,11 +30,13 @@ struct SortLastReport {
     double maxPagingWaitSeconds = 600.0;
 };
 
-/// Renders `root` across the processes of `mpi`: every process draws the opaque geometry
-/// (whose depth stops its volume part) and its part of the Volume's bricks into a partial
-/// image; the partials are composited in visibility order onto rank 0's opaque image. Returns
-/// the frame on rank 0 (an empty Image elsewhere). Collective. A failure on any process fails
-/// all: the lowest failing rank throws its Error, the others throw ReportedElsewhere.
+/// Renders `root` across the processes of `mpi`: every process draws its share of the opaque
+/// shapes (round robin in traversal order) with depth, and one depth composite gives every
+/// process the whole scene's opaque depth and colour; each then draws its part of the Volume's
+/// bricks, stopped by that depth, into a partial image; the partials are composited in
+/// visibility order onto the opaque image on rank 0. Returns the frame on rank 0 (an empty
+/// Image elsewhere). Collective. A failure on any process fails all: the lowest failing rank
+/// throws its Error, the others throw ReportedElsewhere.
 Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& options,
                      const MpiSession& mpi, const SortLastReport& report);
 

@@ -169,6 +169,73 @@ TEST_CASE("sort-last equals one process: an opaque sphere inside stops the volum
 
 namespace {
 
+/// The "opaque shapes" column of --mpi-timing's per-process table, by rank.
+std::vector<int> opaqueShapesPerProcess(const std::string& printed) {
+    std::vector<int> shapes;
+    std::istringstream lines(printed);
+    std::string line;
+    bool inTable = false;
+    while (std::getline(lines, line)) {
+        if (line.find("opaque shapes") != std::string::npos) {
+            inTable = true;
+            continue;
+        }
+        if (!inTable) continue;
+        std::istringstream fields(line);
+        std::vector<std::string> columns;
+        for (std::string f; fields >> f;)
+            columns.push_back(f);
+        if (columns.size() != 9) break;
+        shapes.push_back(std::stoi(columns[7]));
+    }
+    return shapes;
+}
+
+} // namespace
+
+TEST_CASE("sort-last shares the opaque shapes: each process draws its own, composited by depth") {
+    // Nine opaque shapes in and around the volume, and a glTF model: each process draws its
+    // share with depth; one depth composite gives every process the whole scene's depth,
+    // which stops its part of the volume. The image is one process's within 1/255.
+    std::string shapes = "  DirectionalLight { direction -0.3 -0.4 -1 }\n"
+                         "  Separator { Transform { scaleFactor 0.005 0.005 0.005 } "
+                         "GltfModel { fileName \"" VOLSG_SOURCE_DIR
+                         "/examples/data/gltf/Duck/glTF-Binary/Duck.glb\" } }\n";
+    for (int i = 0; i < 9; ++i) {
+        const double x = -0.9 + 0.45 * (i % 5), y = i < 5 ? -0.5 : 0.45, z = 0.3 * (i % 3) - 0.3;
+        const char* shape = i % 3 == 0 ? "Sphere { radius 0.2 }"
+                            : i % 3 == 1 ? "Cube { width 0.3 height 0.25 depth 0.35 }"
+                                         : "Cone { bottomRadius 0.18 height 0.4 }";
+        shapes += "  Separator { Translation { translation " + std::to_string(x) + " " +
+                  std::to_string(y) + " " + std::to_string(z) +
+                  " } Material { diffuseColor " + std::to_string(0.2 + 0.08 * i) +
+                  " 0.7 0.3 } " + shape + " }\n";
+    }
+    const std::vector<std::string> printed = checkAcrossProcesses(
+        "shapes",
+        scene("  PerspectiveCamera { position 0 0 4.5 heightAngle 0.7 nearDistance 1 "
+              "farDistance 10 }",
+              "rotation 1 0.2 0 0.5", shapes));
+    REQUIRE(printed.size() == 3);
+    const std::vector<int> one = opaqueShapesPerProcess(printed[0]);
+    REQUIRE(one.size() == 1);
+    CHECK(one[0] >= 10); // the nine shapes and the model's primitives
+    for (const std::size_t processes : {std::size_t(2), std::size_t(4)}) {
+        const std::vector<int> each = opaqueShapesPerProcess(printed[processes == 2 ? 1 : 2]);
+        CAPTURE(processes);
+        REQUIRE(each.size() == processes);
+        int sum = 0;
+        for (const int n : each) {
+            CHECK(n >= one[0] / int(processes)); // round robin: a fair share each
+            CHECK(n <= one[0] / int(processes) + 1);
+            sum += n;
+        }
+        CHECK(sum == one[0]);
+    }
+}
+
+namespace {
+
 /// A 16-bit volume (values 3000 .. 23000: its natural range is not the type's) as an
 /// OME-Zarr image of 8^3 chunks, ml.zarr in the test's folder.
 void writeSixteenBitImage(const volsg::test::TempDir& dir) {

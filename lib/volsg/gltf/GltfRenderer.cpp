@@ -82,6 +82,7 @@ void GltfRenderer::submit(const FrameContext& frame, const GltfAsset& asset,
             if (primitive.indices.empty()) continue;
             const bool blend = blended(primitive);
             if (blend != (pass == RenderPass::Transparent)) continue;
+            if (!blend && !shapes.ownsNextOpaque()) continue; // another process's (sort-last)
             DrawItem item;
             item.gpu = &gpu.primitive(std::size_t(instance.mesh), p);
             item.material = &asset.materialOf(primitive);

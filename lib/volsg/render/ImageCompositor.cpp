@@ -81,8 +81,9 @@ void ImageCompositor::composite(FrameContext& frame, const CpuImage& image) {
     // The rectangle alone (texels outside it are never read: the draw is scissored to it).
     const std::size_t first = std::size_t(drawn.y) * std::size_t(frameWidth) + std::size_t(drawn.x);
     const int width = drawn.z - drawn.x, height = drawn.w - drawn.y;
-    color_.subImage(drawn.x, drawn.y, 0, width, height, 1, GL_RGBA, GL_FLOAT, image.pixels + first,
-                    frameWidth);
+    if (image.pixels)
+        color_.subImage(drawn.x, drawn.y, 0, width, height, 1, GL_RGBA, GL_FLOAT,
+                        image.pixels + first, frameWidth);
     if (image.windowDepth)
         depth_.subImage(drawn.x, drawn.y, 0, width, height, 1, GL_RED, GL_FLOAT,
                         image.windowDepth + first, frameWidth);
@@ -98,9 +99,11 @@ void ImageCompositor::composite(FrameContext& frame, const CpuImage& image) {
     program_.set("uColor", 0);
     program_.set("uDepth", 1);
     vertexArray_.bind();
-    glDisable(GL_DEPTH_TEST);
-    program_.set("uDepthPass", 0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (image.pixels) {
+        glDisable(GL_DEPTH_TEST);
+        program_.set("uDepthPass", 0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
     glEnable(GL_DEPTH_TEST);
     if (image.windowDepth) {
         glDepthFunc(GL_ALWAYS);

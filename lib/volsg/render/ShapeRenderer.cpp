@@ -118,6 +118,8 @@ void ShapeRenderer::beginFrame(const RenderView& view) {
     drawsLastFrame_ = 0;
     vertexLitLastFrame_ = litLastFrame_ = submittedMeshBytes_ = 0;
     submittedIndices_ = 0;
+    opaqueOrdinal_ = 0;
+    sharedOutLastFrame_ = 0;
     batchesLastFrame_ = batchedShapesLastFrame_ = 0;
     scopes_.clear();
     batches_.clear();
@@ -153,6 +155,7 @@ void ShapeRenderer::submit(const FrameContext& frame, const GpuMesh& gpu, const 
                     " shape vertices in one frame (every USE of a shape draws it again)");
     if (frame.pass == RenderPass::Opaque) submittedMeshBytes_ += gpu.bytes(); // once a frame
     const bool transparent = look.material.transparency > 0.0f || gpu.hasTranslucentColors;
+    if (frame.pass == RenderPass::Opaque && !transparent && !ownsNextOpaque()) return;
     if (frame.pass == RenderPass::Opaque && !transparent && batching_) {
         batch(gpu, look);
     } else if (frame.pass == RenderPass::Opaque && !transparent) {

@@ -118,6 +118,25 @@ public:
     /// materials in a per-instance buffer, each group's shapes front to back. Off: each shape
     /// is drawn when it is submitted (Annotations, whose shapes draw in scene order).
     void setBatching(bool on) { batching_ = on; }
+    /// Sort-last (lib/volsg/sortlast/README.md): this process draws only its share of the
+    /// opaque shapes, the k-th submitted in a frame's Opaque pass when k % count == index.
+    /// Every process traverses the same scene in the same order, so the shares are disjoint
+    /// and together the whole; (0, 1), the default, draws all.
+    void setShare(int index, int count) {
+        shareIndex_ = index;
+        shareCount_ = count > 0 ? count : 1;
+    }
+    /// Counts the next opaque shape (or glTF primitive) and says whether this process draws it.
+    bool ownsNextOpaque() {
+        const bool mine = opaqueOrdinal_ % std::uint64_t(shareCount_) == std::uint64_t(shareIndex_);
+        ++opaqueOrdinal_;
+        if (!mine) ++sharedOutLastFrame_;
+        return mine;
+    }
+    /// Opaque shapes submitted in this frame, drawn here or left to other processes.
+    std::size_t opaqueShapesLastFrame() const { return std::size_t(opaqueOrdinal_); }
+    /// Opaque shapes left to other processes in this frame (setShare).
+    std::size_t sharedOutLastFrame() const { return sharedOutLastFrame_; }
     /// Where lights are summed (RenderDebug::shapeLighting; Automatic by default).
     void setLighting(RenderDebug::Lighting lighting) { lighting_ = lighting; }
     /// Draws the opaque shapes batched since the last flush (the Renderer calls it at the end
@@ -267,6 +286,9 @@ private:
     bool batching_ = true;
     RenderDebug::Lighting lighting_ = RenderDebug::Lighting::Automatic;
     std::size_t vertexLitLastFrame_ = 0, litLastFrame_ = 0, submittedMeshBytes_ = 0;
+    int shareIndex_ = 0, shareCount_ = 1;
+    std::uint64_t opaqueOrdinal_ = 0;
+    std::size_t sharedOutLastFrame_ = 0;
     std::uint64_t submittedIndices_ = 0; ///< this frame's, against limits::maxFrameShapeIndices
     std::vector<Scope> scopes_;
     std::vector<Batch> batches_;

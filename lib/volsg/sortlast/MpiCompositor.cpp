@@ -21,7 +21,29 @@ void overOperator(void* in, void* inout, int* length, MPI_Datatype*) {
     compositeOver(static_cast<const float*>(in), static_cast<float*>(inout), std::size_t(*length));
 }
 
+void nearestOperator(void* in, void* inout, int* length, MPI_Datatype*) {
+    keepNearest(static_cast<const SurfacePixel*>(in), static_cast<SurfacePixel*>(inout),
+                std::size_t(*length));
+}
+
 } // namespace
+
+double compositeNearestEverywhere(std::vector<SurfacePixel>& pixels, MPI_Comm comm) {
+    static_assert(sizeof(SurfacePixel) == 5 * sizeof(float));
+    if (pixels.size() > std::size_t(1) << 30)
+        throw std::invalid_argument("sort-last: an opaque image has at most 2^30 pixels");
+    const auto started = std::chrono::steady_clock::now();
+    MPI_Datatype pixel;
+    MPI_Type_contiguous(5, MPI_FLOAT, &pixel);
+    MPI_Type_commit(&pixel);
+    MPI_Op nearest;
+    // Not commutative: equal depths keep the lower rank's pixel, the same on every process.
+    MPI_Op_create(&nearestOperator, 0, &nearest);
+    MPI_Allreduce(MPI_IN_PLACE, pixels.data(), int(pixels.size()), pixel, nearest, comm);
+    MPI_Op_free(&nearest);
+    MPI_Type_free(&pixel);
+    return millisecondsSince(started);
+}
 
 std::vector<float> compositeInVisibilityOrder(const std::vector<float>& partial, int position,
                                               MPI_Comm comm, int root, CompositeTiming* timing,

@@ -6,6 +6,8 @@
 
 #include <mpi.h>
 
+#include <volsg/sortlast/NearestSurface.h>
+
 namespace volsg {
 
 /// How the partials are combined (lib/volsg/sortlast/README.md, the cost model).
@@ -34,5 +36,11 @@ std::vector<float> compositeInVisibilityOrder(const std::vector<float>& partial,
                                               MPI_Comm comm, int root,
                                               CompositeTiming* timing = nullptr,
                                               CompositeMethod method = CompositeMethod::Reduce);
+
+/// The depth composite of every process's opaque image (its share of the scene's opaque
+/// shapes, drawn with depth), in place and on every process of `comm`: one MPI_Allreduce with
+/// keepNearest, so each process then holds the whole scene's opaque depth (which stops its
+/// part of the volume) and colour. Collective. Returns the milliseconds it took.
+double compositeNearestEverywhere(std::vector<SurfacePixel>& pixels, MPI_Comm comm);
 
 } // namespace volsg

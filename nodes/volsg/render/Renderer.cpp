@@ -4,6 +4,7 @@
 #include <volsg/nodes/Camera.h>
 #include <volsg/nodes/Light.h>
 #include <volsg/nodes/ShearWarpVolume.h>
+#include <volsg/render/ImageCompositor.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/RenderCache.h>
 #include <volsg/render/RenderTarget.h>
@@ -163,6 +164,7 @@ struct Renderer::Impl {
     ShapeRenderer shapes;
     RenderTarget target;
     RenderStats stats;
+    ImageCompositor depthWriter; ///< writes RenderOptions::opaqueDepth (sort-last)
     bool inViewGroup = false; ///< the cache frame spans several renders (beginViewGroup)
     /// The last frame drew a volume: this one starts on the float target.
     bool floatTarget = false;
@@ -228,6 +230,11 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     frame.renderSerial = ++renders;
     frame.partition = options.partition;
     shapes.setBatching(options.debug.batchShapes);
+    shapes.setShare(options.shapeShareIndex, options.shapeShareCount);
+    const bool givenDepth = options.volumePartial && options.opaqueDepth;
+    if (givenDepth && !options.opaqueDepth->empty() &&
+        options.opaqueDepth->size() != std::size_t(options.width) * std::size_t(options.height))
+        throw Error("sort-last: the composited opaque depth is not of the frame's size");
     shapes.setLighting(options.debug.shapeLighting);
     RenderAction action(frame);
     for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
@@ -241,8 +248,15 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
             glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
             glClear(GL_COLOR_BUFFER_BIT);
         }
+        if (givenDepth && pass == RenderPass::Opaque) continue;
         setPassState(pass);
         shapes.beginPass();
+        if (givenDepth && pass == RenderPass::Volume && !options.opaqueDepth->empty()) {
+            CpuImage depthOnly;
+            depthOnly.windowDepth = options.opaqueDepth->data();
+            depthOnly.drawn = glm::ivec4(0, 0, options.width, options.height);
+            depthWriter.composite(frame, depthOnly);
+        }
         action.setPass(pass);
         action.apply(root);
         if (pass == RenderPass::Opaque) shapes.flushOpaque();
@@ -267,6 +281,8 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     stats.programBuilds = shapes.programBuilds();
     stats.cachedEntries = cache.size();
     stats.shapeDraws = shapes.drawsLastFrame();
+    stats.opaqueShapes = shapes.opaqueShapesLastFrame();
+    stats.sharedOutShapes = shapes.sharedOutLastFrame();
     stats.batches = shapes.batchesLastFrame();
     stats.replayedShapes = frame.replayedShapes;
     stats.culledSeparators = frame.culledSeparators;

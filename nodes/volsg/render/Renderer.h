@@ -45,6 +45,14 @@ struct RenderOptions {
     /// before the Volume pass; no transparent pass. Always the float target.
     bool volumePartial = false;
     VolumePartition partition{};
+    /// Sort-last: this process draws the opaque shapes of its share only
+    /// (ShapeRenderer::setShare: the k-th opaque shape when k % count == index).
+    int shapeShareIndex = 0, shapeShareCount = 1;
+    /// Sort-last, with volumePartial: the window depth of every process's opaque shapes
+    /// composited (width * height values, row 0 at the top, 1 where nothing; empty when no
+    /// process drew any). The Opaque pass is not drawn; this depth is written instead (and
+    /// counted as a draw, as the shapes were) and stops the volumes as the shapes would.
+    const std::vector<float>* opaqueDepth = nullptr;
 };
 
 /// What a Renderer has done, for tests and the benchmark: a frame where nothing changed
@@ -55,6 +63,8 @@ struct RenderStats {
     std::uint64_t programBuilds = 0;  ///< shader programs compiled and linked since then
     std::size_t cachedEntries = 0;    ///< per-node GPU caches alive after the last frame
     std::size_t shapeDraws = 0;       ///< shape draw calls in the last frame
+    std::size_t opaqueShapes = 0;     ///< opaque shapes (and glTF primitives) of the last frame
+    std::size_t sharedOutShapes = 0;  ///< of those, left to other processes (sort-last)
     std::size_t batches = 0;          ///< instanced draws of batched opaque shapes, last frame
     std::size_t batchedShapes = 0;    ///< the shapes those draws drew
     std::size_t replayedShapes = 0;   ///< shapes drawn from Separators' render caches, last frame
