@@ -32,14 +32,14 @@ double millisecondsSince(Clock::time_point start) {
 
 /// What one process did, gathered on rank 0 for --mpi-timing.
 struct RankTimes {
-    double opaqueMilliseconds = 0.0;  ///< its share of the opaque shapes, read back
-    double opaqueShapes = 0.0;        ///< the opaque shapes it drew (of the scene's)
+    double opaqueMilliseconds = 0.0;         ///< its share of the opaque shapes, read back
+    double opaqueShapes = 0.0;               ///< the opaque shapes it drew (of the scene's)
     double depthCompositeMilliseconds = 0.0; ///< the opaque images' depth composite
-    double partialMilliseconds = 0.0; ///< the partial image, read back
-    double voxels = 0.0;              ///< voxels its part spans
-    double position = 0.0;            ///< its place front to back
-    double readMilliseconds = 0.0;    ///< reading its own part (0: the scene read it all)
-    double voxelsRead = 0.0;          ///< voxels of its own part and ghost read
+    double partialMilliseconds = 0.0;        ///< the partial image, read back
+    double voxels = 0.0;                     ///< voxels its part spans
+    double position = 0.0;                   ///< its place front to back
+    double readMilliseconds = 0.0;           ///< reading its own part (0: the scene read it all)
+    double voxelsRead = 0.0;                 ///< voxels of its own part and ghost read
     // A paged volume: what this process paged in, over the frames it took to converge.
     double pagedBricks = 0.0;
     double pagedMegabytes = 0.0;

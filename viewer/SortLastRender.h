@@ -1,6 +1,7 @@
 #pragma once
 // volsg-render across MPI processes (sort-last): each renders its share of the opaque shapes
-// and its part of the volume; rank 0 composites the parts over the opaque image. lib/volsg/sortlast/README.md.
+// and its part of the volume; rank 0 composites the parts over the opaque image.
+// lib/volsg/sortlast/README.md.
 
 #include <string>
 

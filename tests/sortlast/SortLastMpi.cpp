@@ -203,19 +203,17 @@ TEST_CASE("sort-last shares the opaque shapes: each process draws its own, compo
                          "/examples/data/gltf/Duck/glTF-Binary/Duck.glb\" } }\n";
     for (int i = 0; i < 9; ++i) {
         const double x = -0.9 + 0.45 * (i % 5), y = i < 5 ? -0.5 : 0.45, z = 0.3 * (i % 3) - 0.3;
-        const char* shape = i % 3 == 0 ? "Sphere { radius 0.2 }"
+        const char* shape = i % 3 == 0   ? "Sphere { radius 0.2 }"
                             : i % 3 == 1 ? "Cube { width 0.3 height 0.25 depth 0.35 }"
                                          : "Cone { bottomRadius 0.18 height 0.4 }";
         shapes += "  Separator { Translation { translation " + std::to_string(x) + " " +
-                  std::to_string(y) + " " + std::to_string(z) +
-                  " } Material { diffuseColor " + std::to_string(0.2 + 0.08 * i) +
-                  " 0.7 0.3 } " + shape + " }\n";
+                  std::to_string(y) + " " + std::to_string(z) + " } Material { diffuseColor " +
+                  std::to_string(0.2 + 0.08 * i) + " 0.7 0.3 } " + shape + " }\n";
     }
     const std::vector<std::string> printed = checkAcrossProcesses(
-        "shapes",
-        scene("  PerspectiveCamera { position 0 0 4.5 heightAngle 0.7 nearDistance 1 "
-              "farDistance 10 }",
-              "rotation 1 0.2 0 0.5", shapes));
+        "shapes", scene("  PerspectiveCamera { position 0 0 4.5 heightAngle 0.7 nearDistance 1 "
+                        "farDistance 10 }",
+                        "rotation 1 0.2 0 0.5", shapes));
     REQUIRE(printed.size() == 3);
     const std::vector<int> one = opaqueShapesPerProcess(printed[0]);
     REQUIRE(one.size() == 1);

@@ -15,7 +15,7 @@ namespace volsg {
 /// A premultiplied RGBA float image of the frame's size (row 0 at the top), and optionally the
 /// window depth of its opaque results, of which only the rectangle `drawn` is set.
 struct CpuImage {
-    const glm::vec4* pixels = nullptr; ///< null: depth only (windowDepth), no colour
+    const glm::vec4* pixels = nullptr;  ///< null: depth only (windowDepth), no colour
     const float* windowDepth = nullptr; ///< null: no opaque results (all 1)
     glm::ivec4 drawn{0};                ///< (x0, y0, x1, y1), exclusive, row 0 at the top
 };

@@ -165,7 +165,7 @@ struct Renderer::Impl {
     RenderTarget target;
     RenderStats stats;
     ImageCompositor depthWriter; ///< writes RenderOptions::opaqueDepth (sort-last)
-    bool inViewGroup = false; ///< the cache frame spans several renders (beginViewGroup)
+    bool inViewGroup = false;    ///< the cache frame spans several renders (beginViewGroup)
     /// The last frame drew a volume: this one starts on the float target.
     bool floatTarget = false;
 
