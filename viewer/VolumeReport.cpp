@@ -59,6 +59,15 @@ std::string describe(const Volume& v) {
                       s.predictedRmse * 255.0, s.errorTarget * 255.0,
                       s.meetsTarget ? "" : ", not met", s.coverage * 100.0, s.qualityMilliseconds);
         out += line;
+        if (s.paging.paged && s.paging.lodRmse >= 0.0) {
+            std::snprintf(line, sizeof line,
+                          " = quadrature %.3g/255 and level of detail %.3g/255%s",
+                          s.quadratureRmse * 255.0, s.paging.lodRmse * 255.0,
+                          s.paging.measuredFrom == 0
+                              ? ""
+                              : " (the levels from the stand-in up: finer detail not seen)");
+            out += line;
+        }
     } else {
         out += s.paging.paged ? ", no prediction (paged without a target: 2 planes per voxel of "
                                 "the finest level drawn)"

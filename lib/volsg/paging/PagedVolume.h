@@ -47,6 +47,12 @@ public:
     /// that its box is level 0's (the whole-grid consumers see the volume in the right place).
     ref_ptr<const VolumeGrid> standIn() const { return whole_.at(standInLevel_); }
     int standInLevel() const { return standInLevel_; }
+    /// A level kept whole (the stand-in or one above it), null for finer levels. The stand-in's
+    /// spacing is adjusted (above); the others have their level's own.
+    const VolumeGrid* keptWhole(int level) const {
+        const auto it = whole_.find(level);
+        return it == whole_.end() ? nullptr : it->second.get();
+    }
     /// Level 0's smallest voxel edge: the opacity unit L0 of the rendering model.
     double finestSpacing() const;
 

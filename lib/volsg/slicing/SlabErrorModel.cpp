@@ -698,6 +698,54 @@ double SlabErrorModel::rayRmseUpTo(int dir, const SlabQuadrature& q, double limi
     return rmse;
 }
 
+namespace {
+constexpr std::size_t kLevelRayStride = 4;
+} // namespace
+
+const std::vector<glm::dvec3>& SlabErrorModel::levelImage(int dir, int level,
+                                                          const VolumeGrid* grid) {
+    const auto key = std::make_pair(dir, level);
+    if (auto it = levelImages_.find(key); it != levelImages_.end()) return it->second;
+    Impl& m = *impl_;
+    const RaySet& s = m.raysAlong(dir);
+    std::vector<glm::dvec3> image;
+    image.reserve(s.rays.size() / kLevelRayStride + 1);
+    const GridSampler own = m.grid;
+    if (grid) {
+        // The same sampler over the other grid: its box is the model's (a level's spacing
+        // makes it so), its voxels its own.
+        m.grid.grid = grid;
+        m.grid.dims = grid->dimensions();
+        m.grid.spacing = grid->spacing();
+        m.grid.strideY = std::size_t(m.grid.dims.x);
+        m.grid.strideZ = std::size_t(m.grid.dims.x) * std::size_t(m.grid.dims.y);
+        if (grid->type() == VoxelType::Float)
+            std::tie(m.grid.lowest, m.grid.highest) = grid->minMax();
+    }
+    for (std::size_t i = 0; i < s.rays.size(); i += kLevelRayStride) {
+        const ModelRay& ray = s.rays[i];
+        image.push_back(
+            grid ? (mode_ == VolumeRenderMode::DVR ? m.truthDvr(ray) : m.truthExtreme(ray, ray.dir))
+                 : s.truth[i]);
+    }
+    m.grid = own;
+    ++evaluations_;
+    return levelImages_.emplace(key, std::move(image)).first->second;
+}
+
+double SlabErrorModel::levelDifference(int dir, int levelA, const VolumeGrid* a, int levelB,
+                                       const VolumeGrid* b) {
+    if (tagged_) return 0.0;
+    const std::vector<glm::dvec3>& imageA = levelImage(dir, levelA, a);
+    const std::vector<glm::dvec3>& imageB = levelImage(dir, levelB, b);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < imageA.size(); ++i) {
+        const glm::dvec3 e = imageA[i] - imageB[i];
+        sum += glm::dot(e, e) / 3.0;
+    }
+    return imageA.empty() ? 0.0 : std::sqrt(sum / double(imageA.size()));
+}
+
 double SlabErrorModel::preClassifiedRmse(int dir, int sliceStep) {
     const auto key = std::make_pair(dir, sliceStep);
     if (auto it = preClassifiedCache_.find(key); it != preClassifiedCache_.end()) return it->second;

@@ -95,6 +95,15 @@ public:
     /// the principal axis, one sample per slice, every `sliceStep`-th slice with opacity
     /// corrected for the step. Its floor is sliceStep 1.
     double preClassifiedRmse(int dir, int sliceStep);
+    /// The RMSE per channel (0..1 units) between the model's image along direction `dir`'s
+    /// rays drawn from grid `a` and from grid `b`: what drawing one level of a paged volume's
+    /// pyramid instead of another changes, quadrature aside. Both grids span the model's box
+    /// (their spacing makes it so) at their own resolution; null stands for the model's own
+    /// grid; `levelA` and `levelB` name them for the cache (the caller's levels, never reused
+    /// for other data in one model). Every fourth ray (a quarter of the model's cost).
+    /// Untagged volumes only (a tag grid is the model's grid's).
+    double levelDifference(int dir, int levelA, const VolumeGrid* a, int levelB,
+                           const VolumeGrid* b);
     /// Whether direction `dir`'s rays are cast already (rayRmse for it is then cheap).
     bool hasDirection(int dir) const;
     /// The box's depth along direction `dir`, in L0.
@@ -117,6 +126,9 @@ private:
     };
     std::map<std::pair<int, SlabQuadrature>, CachedRmse> cache_;
     std::map<std::pair<int, int>, double> preClassifiedCache_;
+    /// levelDifference's images per (direction, level).
+    std::map<std::pair<int, int>, std::vector<glm::dvec3>> levelImages_;
+    const std::vector<glm::dvec3>& levelImage(int dir, int level, const VolumeGrid* grid);
     int evaluations_ = 0;
 };
 

@@ -49,9 +49,12 @@ struct SlicingStats {
     int samplesPerPlane = 1;
     bool preIntegrated = false;
     bool mipPeaks = false;
-    double planeSpacingL0 = 0.0;      ///< plane spacing along the view, in L0
-    double errorTarget = 0.0;         ///< the target this frame was chosen for (0..1 units)
-    double predictedRmse = -1.0;      ///< per channel, 0..1 units
+    double planeSpacingL0 = 0.0; ///< plane spacing along the view, in L0
+    double errorTarget = 0.0;    ///< the target this frame was chosen for (0..1 units)
+    double predictedRmse = -1.0; ///< per channel, 0..1 units
+    /// The quadrature's part of it (the same but for a paged volume, whose prediction adds
+    /// the level of detail's: PagingStats::lodRmse).
+    double quadratureRmse = -1.0;
     bool meetsTarget = true;          ///< the prediction is within the target
     double coverage = 0.0;            ///< share of the image's pixels whose rays cross the box
     double qualityMilliseconds = 0.0; ///< CPU time of the choice (part of cpuMilliseconds)

@@ -9,6 +9,7 @@
 #include <volsg/paging/PagedVolume.h>
 #include <volsg/render/ShapeRenderer.h>
 #include <volsg/slicing/BrickLayout.h>
+#include <volsg/slicing/LevelOfDetailError.h>
 #include <volsg/slicing/PagedBricks.h>
 #include <volsg/slicing/SliceDraw.h>
 #include <volsg/slicing/SliceGeometry.h>
@@ -198,7 +199,7 @@ SlicingStats layoutStats(const VolumeTextures& v, const SlicePlan& plan,
     drawn.planeSpacingL0 = plan.layout.spacing * localPerEyeAxis / plan.local.L0;
     if (quality.predicted) {
         drawn.errorTarget = quality.target;
-        drawn.predictedRmse = quality.choice.predictedRmse;
+        drawn.predictedRmse = drawn.quadratureRmse = quality.choice.predictedRmse;
         drawn.meetsTarget = quality.choice.meetsTarget;
         drawn.coverage = quality.view.coverage;
         drawn.qualityMilliseconds = quality.milliseconds;
@@ -210,6 +211,19 @@ SlicingStats layoutStats(const VolumeTextures& v, const SlicePlan& plan,
     drawn.planeSpacing = plan.layout.spacing;
     drawn.emptyCells = plan.method.skipCells ? v.cells.emptyFraction() : 0.0;
     return drawn;
+}
+
+/// A paged frame's predicted error: the quadrature's (made on the stand-in) and the level of
+/// detail's (LevelOfDetailError.h), as independent parts of one image RMSE.
+void foldLevelOfDetail(SlabErrorModel& model, const FrameQuality& quality, const PagedVolume& paged,
+                       PagingStats& paging, SlicingStats& drawn) {
+    const LevelOfDetailError lod =
+        predictLevelOfDetailError(model, quality.view, paged, paging.levelShares);
+    paging.lodRmse = lod.rmse;
+    paging.measuredFrom = lod.measuredFrom;
+    if (!(lod.rmse >= 0.0)) return;
+    drawn.predictedRmse = std::hypot(drawn.quadratureRmse, lod.rmse);
+    drawn.meetsTarget = drawn.predictedRmse <= quality.target;
 }
 
 /// Sort-last (lib/volsg/sortlast/README.md): the box of this process's part of a k-d split of
@@ -278,6 +292,8 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     if (volume.paged) paging = preparePaged(frame, owner, key, v, volume, plan.local, chosen);
     plan.layout = planeLayout(plan.local, chosen, plan.method.slabSamples, frame);
     SlicingStats drawn = layoutStats(v, plan, chosen, quality);
+    if (volume.paged && quality.predicted && v.errorModel)
+        foldLevelOfDetail(*v.errorModel, quality, *volume.paged, paging, drawn);
     drawn.paging = paging;
     plan.clipPlanes = localClipPlanes(volume);
     plan.rows = planRows(v, plan, chosen);
