@@ -4,7 +4,6 @@
 
 #include <cstdint>
 #include <string>
-#include <vector>
 
 namespace volsg {
 
@@ -24,12 +23,10 @@ struct PagingStats {
     int wanted = 0;                ///< finer bricks this frame asked for
     bool converged = false;        ///< nothing wanted: as fine as the budgets allow
     double finestDrawnVoxel = 0.0; ///< smallest voxel edge of the drawn bricks (local units)
-    /// Per level, the share of the drawn bricks' region (in level-0 voxels) drawn at it.
-    std::vector<double> levelShares;
     /// The level-of-detail part of the predicted error (lib/volsg/slicing/LevelOfDetailError.h):
-    /// the image RMSE, 0..1 units, of drawing the levels coarser than the stand-in instead of
-    /// it; the whole LOD error when measuredFrom is 0, else without detail finer than the
-    /// stand-in. < 0 when not predicted (no error target, tagged volumes).
+    /// the image RMSE, 0..1 units, of drawing the levels coarser than the stand-in where the
+    /// frame does instead of it; the whole LOD error when measuredFrom is 0, else without
+    /// detail finer than the stand-in. < 0 when not predicted (no error target, tagged volumes).
     double lodRmse = -1.0;
     int measuredFrom = 0; ///< the stand-in level the differences were measured against
     // Memory now.

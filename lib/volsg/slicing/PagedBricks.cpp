@@ -248,6 +248,7 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
         drawnKeys.push_back(key);
     }
     slots.wanted = chosen.wanted;
+    v.pagedDrawn = drawnKeys;
     v.layout = BrickLayout::fromBricks(slots.bricks, layout.level(0).dimensions, layout.spacing(),
                                        texelBytes);
     v.hasLayout = true;
@@ -258,22 +259,13 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
     stats.bricksDrawn = int(drawnKeys.size());
     stats.finestLevel = layout.levelCount() - 1;
     stats.finestDrawnVoxel = std::numeric_limits<double>::infinity();
-    stats.levelShares.assign(std::size_t(layout.levelCount()), 0.0);
-    double drawnVolume = 0.0;
     for (const BrickKey& key : drawnKeys) {
-        glm::dvec3 lo, hi;
-        layout.box(key, lo, hi);
-        const glm::dvec3 size = glm::max(hi - lo, glm::dvec3(0.0));
-        stats.levelShares[std::size_t(key.level)] += size.x * size.y * size.z;
-        drawnVolume += size.x * size.y * size.z;
         stats.finestLevel = std::min(stats.finestLevel, key.level);
         stats.coarsestLevel = std::max(stats.coarsestLevel, key.level);
         const glm::dvec3 s = layout.spacingOf(key.level);
         stats.finestDrawnVoxel = std::min({stats.finestDrawnVoxel, s.x, s.y, s.z});
     }
     if (drawnKeys.empty()) stats.finestDrawnVoxel = paged.finestSpacing();
-    for (double& share : stats.levelShares)
-        share = drawnVolume > 0.0 ? share / drawnVolume : 0.0;
     stats.worstVoxelPixels = chosen.worstPixels;
     stats.pixelBudget = pixelBudget;
     stats.coarserBricks = chosen.coarser;

@@ -53,6 +53,17 @@ struct SignalNeeds {
     double samplesPerL0 = 0.0;
 };
 
+/// Which grid a paged frame draws where: a lattice of cells over the model's box, each naming
+/// one of `grids` (a level of the pyramid held whole; null: the model's own grid, which stands
+/// for any level it cannot see).
+struct GridCut {
+    glm::dvec3 boxMin{0.0}, cellSize{1.0}; ///< local units
+    glm::ivec3 cells{0};
+    std::vector<std::uint8_t> cellGrid; ///< per cell (x fastest), an index into grids
+    std::vector<const VolumeGrid*> grids;
+    std::uint64_t key = 0; ///< the cut's identity, for the cache
+};
+
 /// A box of the volume (local coordinates) the model's rays are confined to.
 struct ModelRegion {
     glm::dvec3 min{0.0}, max{0.0};
@@ -96,14 +107,12 @@ public:
     /// corrected for the step. Its floor is sliceStep 1.
     double preClassifiedRmse(int dir, int sliceStep);
     /// The RMSE per channel (0..1 units) between the model's image along direction `dir`'s
-    /// rays drawn from grid `a` and from grid `b`: what drawing one level of a paged volume's
-    /// pyramid instead of another changes, quadrature aside. Both grids span the model's box
-    /// (their spacing makes it so) at their own resolution; null stands for the model's own
-    /// grid; `levelA` and `levelB` name them for the cache (the caller's levels, never reused
-    /// for other data in one model). Every fourth ray (a quarter of the model's cost).
-    /// Untagged volumes only (a tag grid is the model's grid's).
-    double levelDifference(int dir, int levelA, const VolumeGrid* a, int levelB,
-                           const VolumeGrid* b);
+    /// rays and the same rays drawn from `cut`: each sample from the grid the cut names at its
+    /// point, so a coarse level's error counts as far as rays cross it, behind what lies in
+    /// front. Of 64 x 64 rays, those crossing a cell of another grid are found and up to 128
+    /// of them integrated both ways (segments of at most a quarter voxel); the last few cuts cached
+    /// by (dir, cut.key).
+    double cutDifference(int dir, const GridCut& cut);
     /// Whether direction `dir`'s rays are cast already (rayRmse for it is then cheap).
     bool hasDirection(int dir) const;
     /// The box's depth along direction `dir`, in L0.
@@ -126,9 +135,8 @@ private:
     };
     std::map<std::pair<int, SlabQuadrature>, CachedRmse> cache_;
     std::map<std::pair<int, int>, double> preClassifiedCache_;
-    /// levelDifference's images per (direction, level).
-    std::map<std::pair<int, int>, std::vector<glm::dvec3>> levelImages_;
-    const std::vector<glm::dvec3>& levelImage(int dir, int level, const VolumeGrid* grid);
+    std::vector<std::pair<std::pair<int, std::uint64_t>, double>> cutCache_; ///< newest last
+
     int evaluations_ = 0;
 };
 

@@ -216,9 +216,12 @@ SlicingStats layoutStats(const VolumeTextures& v, const SlicePlan& plan,
 /// A paged frame's predicted error: the quadrature's (made on the stand-in) and the level of
 /// detail's (LevelOfDetailError.h), as independent parts of one image RMSE.
 void foldLevelOfDetail(SlabErrorModel& model, const FrameQuality& quality, const PagedVolume& paged,
-                       PagingStats& paging, SlicingStats& drawn) {
+                       const std::vector<BrickKey>& drawnBricks, PagingStats& paging,
+                       SlicingStats& drawn) {
+    const auto started = std::chrono::steady_clock::now();
     const LevelOfDetailError lod =
-        predictLevelOfDetailError(model, quality.view, paged, paging.levelShares);
+        predictLevelOfDetailError(model, quality.view, paged, drawnBricks);
+    drawn.qualityMilliseconds += millisecondsSince(started);
     paging.lodRmse = lod.rmse;
     paging.measuredFrom = lod.measuredFrom;
     if (!(lod.rmse >= 0.0)) return;
@@ -293,7 +296,7 @@ void VolumeSlicer::draw(FrameContext& frame, const Object& owner, const RayCastV
     plan.layout = planeLayout(plan.local, chosen, plan.method.slabSamples, frame);
     SlicingStats drawn = layoutStats(v, plan, chosen, quality);
     if (volume.paged && quality.predicted && v.errorModel)
-        foldLevelOfDetail(*v.errorModel, quality, *volume.paged, paging, drawn);
+        foldLevelOfDetail(*v.errorModel, quality, *volume.paged, v.pagedDrawn, paging, drawn);
     drawn.paging = paging;
     plan.clipPlanes = localClipPlanes(volume);
     plan.rows = planRows(v, plan, chosen);

@@ -12,6 +12,7 @@
 #include <volsg/gl/Buffer.h>
 #include <volsg/gl/Texture.h>
 #include <volsg/gl/VertexArray.h>
+#include <volsg/paging/BrickKey.h>
 #include <volsg/slicing/BrickLayout.h>
 #include <volsg/slicing/CellRows.h>
 #include <volsg/slicing/DataFormat.h>
@@ -87,6 +88,9 @@ struct VolumeTextures {
     int rowsReach = -1;
     std::uint64_t rowsTableKey = 0;
     int rowsKind = -1;
+
+    /// A paged volume's bricks drawn in the last frame (their levels: LevelOfDetailError).
+    std::vector<BrickKey> pagedDrawn;
 
     /// The error model of this grid under the current transfer functions and mode.
     std::unique_ptr<SlabErrorModel> errorModel;
