@@ -18,7 +18,8 @@ namespace volsg::cli {
 
 namespace fs = std::filesystem;
 
-OwnPartLoad loadOwnPart(Node& root, const std::string& sceneFile, int part, int parts) {
+OwnPartLoad loadOwnPart(Node& root, const std::string& sceneFile, int part, int parts,
+                        bool underTarget) {
     OwnPartLoad load;
     const std::vector<Node*> data = findAll(root, VolumeData::classType(), true);
     if (data.size() != 1) {
@@ -45,6 +46,14 @@ OwnPartLoad loadOwnPart(Node& root, const std::string& sceneFile, int part, int 
         load.paged = true;
         return load;
     }
+    for (const Node* v : findAll(root, Volume::classType(), true))
+        if (static_cast<const Volume*>(v)->errorTarget() > 0.0f && !underTarget) {
+            load.whyNot = "the Volume draws to an error target, whose slabs may reach across the "
+                          "parts: every process reads the image whole, so the frame is one "
+                          "process's (--mpi-own-chunks reads only each part, and meets the target "
+                          "without being one process's within 1/255)";
+            return load;
+        }
     const auto started = std::chrono::steady_clock::now();
     const glm::ivec3 dims = readOmeZarrDimensions(path.string());
     // The split the slicer will make (FrameContext::partition) from the grid's dimensions and

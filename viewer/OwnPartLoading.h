@@ -39,8 +39,12 @@ constexpr int kOwnPartGhost = 4;
 /// (KdVolumeSplit) with kOwnPartGhost voxels around it into the node
 /// (VolumeData::adoptLoaded); the rest of the grid holds the fill value. The render must then
 /// set VolumePartition::ownDataOnly. Otherwise reads nothing and says why. Relative file names
-/// resolve against `sceneFile`'s folder.
-OwnPartLoad loadOwnPart(Node& root, const std::string& sceneFile, int part, int parts);
+/// resolve against `sceneFile`'s folder. A Volume drawn to an error target reads the whole
+/// image unless `underTarget`: its quadrature may lay slabs deeper than the ghost, which a
+/// process holding its part must end at the part's faces, so the frame would meet the target
+/// but not be one process's within 1/255 (lib/volsg/sortlast/README.md).
+OwnPartLoad loadOwnPart(Node& root, const std::string& sceneFile, int part, int parts,
+                        bool underTarget = false);
 
 /// Gives the transfer functions that take the data's own range `range` (the whole volume's,
 /// agreed by the processes) as their dataRange, as one process reading it all would use.

@@ -58,8 +58,12 @@ const char* usage =
     "                and its part of the Volume node (a k-d split of its box; DVR only, one\n"
     "                Volume, no transparent shapes); rank 0 composites the parts in visibility\n"
     "                order over the opaque image and writes OUT; from an OME-Zarr\n"
-    "                volume with errorTarget 0 each process reads only its own chunks; without\n"
-    "                mpirun one process draws everything (no MPI start-up)\n"
+    "                volume with errorTarget 0 each process reads only its own chunks (a paged\n"
+    "                pyramid: only its own bricks); without mpirun one process draws\n"
+    "                everything (no MPI start-up)\n"
+    "  --mpi-own-chunks  under an error target too, each process reads only its own chunks\n"
+    "                of an OME-Zarr volume: the frame meets the target but is not one\n"
+    "                process's within 1/255 (slabs end at the parts' faces)\n"
     "  --mpi-timing  rank 0 prints each process's read and render times and the compositing\n"
     "                time\n"
     "  --mpi-composite reduce|reduce-scatter  how the parts combine: MPI_Reduce to rank 0\n"
@@ -100,7 +104,7 @@ int run(volsg::cli::Arguments& args) {
     volsg::OpenFileOptions open;
     stereo.mode = volsg::StereoMode::Off;
     double time = 0.0;
-    bool mpiTiming = false;
+    bool mpiTiming = false, mpiOwnChunks = false;
     std::string mpiComposite = "reduce";
     volsg::cli::Options table;
     table.text({"-o", "--output"}, output)
@@ -111,6 +115,7 @@ int run(volsg::cli::Arguments& args) {
         .flag("--interactive", options.interactive)
         .flag("--verbose", verbose)
         .flag("--mpi-timing", mpiTiming)
+        .flag("--mpi-own-chunks", mpiOwnChunks)
         .value("--mpi-composite", [&](const std::string& v) { mpiComposite = v; })
         .value("--tolerance",
                [&](const std::string& v) { rayOptions.tolerance = parseTolerance(v); })
@@ -165,6 +170,7 @@ int run(volsg::cli::Arguments& args) {
         sortLastStarted = true;
         volsg::cli::SortLastReport report;
         report.timing = mpiTiming;
+        report.ownChunksUnderTarget = mpiOwnChunks;
         if (mpiComposite == "reduce-scatter")
             report.method = volsg::CompositeMethod::ReduceScatter;
         else if (mpiComposite != "reduce")
@@ -181,8 +187,9 @@ int run(volsg::cli::Arguments& args) {
         return 0;
     }
 #endif
-    if (mpiTiming || mpiComposite != "reduce")
-        throw volsg::Error("--mpi-timing and --mpi-composite apply to a run under mpirun");
+    if (mpiTiming || mpiOwnChunks || mpiComposite != "reduce")
+        throw volsg::Error(
+            "--mpi-timing, --mpi-own-chunks and --mpi-composite apply to a run under mpirun");
     volsg::Image image = volsg::renderStereo(renderer, *root, options, stereo);
     // A paged volume draws what is loaded and asks for the rest: a still image is rendered
     // again as bricks arrive until nothing more is wanted (this tool is not interactive).

@@ -163,7 +163,8 @@ Image renderSortLast(Renderer& renderer, Node& root, const RenderOptions& option
     OwnPartLoad load;
     try {
         volume = splitVolumeOf(root, size);
-        if (volume && size > 1) load = loadOwnPart(root, report.sceneFile, rank, size);
+        if (volume && size > 1)
+            load = loadOwnPart(root, report.sceneFile, rank, size, report.ownChunksUnderTarget);
     } catch (const std::exception& e) {
         why = e.what();
     }

@@ -29,6 +29,9 @@ struct SortLastReport {
     /// A paged volume's partial is drawn again as bricks arrive until every process's has
     /// converged, or this long.
     double maxPagingWaitSeconds = 600.0;
+    /// Under an error target, each process still reads only its part of an OME-Zarr volume
+    /// (loadOwnPart): the frame meets the target, but is not one process's within 1/255.
+    bool ownChunksUnderTarget = false;
 };
 
 /// Renders `root` across the processes of `mpi`: every process draws its share of the opaque

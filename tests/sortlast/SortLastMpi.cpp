@@ -291,8 +291,17 @@ double rmse(const volsg::Image& a, const volsg::Image& b) {
 
 } // namespace
 
-TEST_CASE("sort-last with an error target: each process reads its own chunks, and the image "
-          "meets the target") {
+TEST_CASE("sort-last with an error target (the default): every process reads the OME-Zarr "
+          "image whole, and the image is one process's") {
+    // Slabs of the chosen quadrature may reach across the parts' faces: holding the whole
+    // image, each process draws its fragments as one process does (within 1/255 of it).
+    checkAcrossProcesses("target-whole", zarrScene(""), writeSixteenBitImage,
+                         "every process read the whole volume: the Volume draws to an error "
+                         "target");
+}
+
+TEST_CASE("sort-last with an error target and --mpi-own-chunks: each process reads its own "
+          "chunks, and the image meets the target") {
     // The Volume's default (errorTarget 0.5/255). Each process reads its part and ghost, ends
     // its slabs at its part's faces (as at brick seams), judges the error on the rays through
     // its part, and all draw the costliest of the processes' choices. The image is not one
@@ -316,7 +325,7 @@ TEST_CASE("sort-last with an error target: each process reads its own chunks, an
         CAPTURE(processes);
         const std::string out = dir.file("mpi" + std::to_string(processes) + ".pfm");
         const Run r = run(dir, mpirun(dir, processes) + render() + " " + file + " -o " + out +
-                                   size + " --mpi-timing");
+                                   size + " --mpi-timing --mpi-own-chunks");
         REQUIRE_MESSAGE(r.status == 0, r.err);
         CHECK(r.out.find("each process read only its part and 4 ghost voxels") !=
               std::string::npos);
@@ -411,4 +420,17 @@ TEST_CASE("sort-last refuses what it cannot split, in one line from one process"
     // Said once, by one process.
     const std::size_t first = r.err.find("composites DVR only");
     CHECK(r.err.find("composites DVR only", first + 1) == std::string::npos);
+}
+
+TEST_CASE("the sort-last options outside mpirun are refused in one line") {
+    const volsg::test::TempDir dir("volsg-sortlast");
+    const std::string file = dir.file("one.iv");
+    std::ofstream(file) << zarrScene("");
+    for (const char* option :
+         {"--mpi-timing", "--mpi-own-chunks", "--mpi-composite reduce-scatter"}) {
+        CAPTURE(option);
+        const Run r = run(dir, render() + " " + file + " -o " + dir.file("o.png") + " " + option);
+        CHECK(r.status != 0);
+        CHECK(r.err.find("apply to a run under mpirun") != std::string::npos);
+    }
 }
