@@ -771,12 +771,14 @@ double SlabErrorModel::cutDifference(int dir, const GridCut& cut) {
     // them (geometry only), a sample of those is integrated both ways, and the image's mean
     // squared difference is theirs times their share.
     const std::vector<ModelRay> rays = m.castRays(dir, kCutRaysAcross);
-    // Both integrations in segments of a quarter voxel at most (the model's own are finer for
-    // spiky transfer functions): only the difference of the two is wanted, and a segment's v
-    // is integrated exactly either way (the segment table). Half a voxel under-predicted a
-    // spiky function's difference by up to 1.3 times more; this costs 25-50 ms a new cut on
-    // the chest CT at 512 x 512.
-    const double cutStep = std::max(m.truthStep, 0.25 * L0_);
+    // Both integrations in segments of a quarter of the model's grid's voxel at most (the
+    // model's own are finer for spiky transfer functions, and in level 0's voxels for a
+    // paged stand-in): only the difference of the two is wanted, and a segment's v is
+    // integrated exactly either way (the segment table). Half a voxel under-predicted a spiky
+    // function's difference by up to 1.3 times more; this costs 25-50 ms a new cut on the
+    // chest CT at 512 x 512.
+    const double gridVoxel = std::min({m.grid.spacing.x, m.grid.spacing.y, m.grid.spacing.z});
+    const double cutStep = std::max(m.truthStep, 0.25 * gridVoxel);
     const auto ownAt = [&m](const glm::dvec3& p) { return m.grid.data(p); };
     const double step = 0.5 * std::min({cut.cellSize.x, cut.cellSize.y, cut.cellSize.z});
     std::vector<std::size_t> crossing;
