@@ -46,6 +46,18 @@ Volume& volumeOf(Node& root) {
     return *static_cast<Volume*>(found.front());
 }
 
+/// Renders `scene` until its paged Volume has converged (at most 200 frames).
+Image renderConverged(Renderer& renderer, Node& scene, const RenderOptions& options) {
+    Image image;
+    for (int frame = 0; frame < 200; ++frame) {
+        image = renderer.render(scene, options);
+        if (volumeOf(scene).slicingStats().paging.converged) break;
+        const std::vector<Node*> data = findAll(scene, VolumeData::classType(), true);
+        static_cast<VolumeData*>(data.front())->pagedVolume()->cache().waitIdle(50);
+    }
+    return image;
+}
+
 } // namespace
 
 TEST_CASE_FIXTURE(GlFixture, "a paged volume meets its error target with planes chosen on the "
@@ -61,15 +73,8 @@ TEST_CASE_FIXTURE(GlFixture, "a paged volume meets its error target with planes 
     // sees half the resolution the converged frame draws.
     ref_ptr<Node> paged =
         readScene(dir, "paged.iv", sceneText("paging ON memoryBudget 1", "lodPixels 0.25"));
-    Volume& volume = volumeOf(*paged);
-    Image image;
-    for (int frame = 0; frame < 200; ++frame) {
-        image = renderer.render(*paged, options);
-        if (volume.slicingStats().paging.converged) break;
-        const std::vector<Node*> data = findAll(*paged, VolumeData::classType(), true);
-        static_cast<VolumeData*>(data.front())->pagedVolume()->cache().waitIdle(50);
-    }
-    const SlicingStats stats = volume.slicingStats();
+    const Image image = renderConverged(renderer, *paged, options);
+    const SlicingStats stats = volumeOf(*paged).slicingStats();
     REQUIRE(stats.paging.paged);
     REQUIRE(stats.paging.converged);
     CHECK(stats.paging.finestLevel == 0);
@@ -83,13 +88,7 @@ TEST_CASE_FIXTURE(GlFixture, "a paged volume meets its error target with planes 
     // The fixed rule it replaced: two planes per voxel of level 0, one sample each.
     ref_ptr<Node> fixed = readScene(
         dir, "fixed.iv", sceneText("paging ON memoryBudget 1", "lodPixels 0.25 errorTarget 0"));
-    Image fixedImage;
-    for (int frame = 0; frame < 200; ++frame) {
-        fixedImage = renderer.render(*fixed, options);
-        if (volumeOf(*fixed).slicingStats().paging.converged) break;
-        const std::vector<Node*> data = findAll(*fixed, VolumeData::classType(), true);
-        static_cast<VolumeData*>(data.front())->pagedVolume()->cache().waitIdle(50);
-    }
+    const Image fixedImage = renderConverged(renderer, *fixed, options);
     keepImage(image, "paged-target");
     keepImage(reference, "paged-target-reference");
     MESSAGE("paged at errorTarget 0.5: "
@@ -101,22 +100,6 @@ TEST_CASE_FIXTURE(GlFixture, "a paged volume meets its error target with planes 
     // Fewer planes than the fixed rule draws.
     CHECK(stats.planes < volumeOf(*fixed).slicingStats().planes / 2);
 }
-
-namespace {
-
-/// Renders `scene` until its paged Volume has converged (at most 200 frames).
-Image renderConverged(Renderer& renderer, Node& scene, const RenderOptions& options) {
-    Image image;
-    for (int frame = 0; frame < 200; ++frame) {
-        image = renderer.render(scene, options);
-        if (volumeOf(scene).slicingStats().paging.converged) break;
-        const std::vector<Node*> data = findAll(scene, VolumeData::classType(), true);
-        static_cast<VolumeData*>(data.front())->pagedVolume()->cache().waitIdle(50);
-    }
-    return image;
-}
-
-} // namespace
 
 TEST_CASE_FIXTURE(GlFixture, "a paged frame's predicted error includes its level of detail, "
                              "measured on the levels held whole") {

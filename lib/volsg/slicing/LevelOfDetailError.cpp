@@ -42,10 +42,7 @@ GridCut gridCutOf(const PagedVolume& paged, const std::vector<BrickKey>& drawn) 
         for (int z = first.z; z < last.z; ++z)
             for (int y = first.y; y < last.y; ++y)
                 for (int x = first.x; x < last.x; ++x)
-                    cut.cellGrid[std::size_t(x) +
-                                 std::size_t(cut.cells.x) *
-                                     (std::size_t(y) + std::size_t(cut.cells.y) * std::size_t(z))] =
-                        std::uint8_t(grid);
+                    cut.cellGrid[cut.indexOf({x, y, z})] = std::uint8_t(grid);
     }
     cut.key = key;
     return cut;
@@ -57,13 +54,15 @@ LevelOfDetailError predictLevelOfDetailError(SlabErrorModel& model, const Qualit
     LevelOfDetailError out;
     out.measuredFrom = paged.standInLevel();
     if (model.tagged()) return out;
-    const GridCut cut = gridCutOf(paged, drawn);
+    // A converged frame usually draws nothing coarser than the stand-in: no cut to make.
+    const bool coarse = std::any_of(drawn.begin(), drawn.end(), [&](const BrickKey& b) {
+        return b.level > out.measuredFrom && paged.keptWhole(b.level);
+    });
+    out.rmse = 0.0;
+    if (!coarse) return out;
     const int dir = SlabErrorModel::nearestDirection(view.localDirection, view.coneTangent > 0.2);
-    const bool coarse = std::any_of(cut.cellGrid.begin(), cut.cellGrid.end(),
-                                    [](std::uint8_t g) { return g != 0; });
-    out.rmse = coarse
-                   ? std::sqrt(std::clamp(view.coverage, 0.0, 1.0)) * model.cutDifference(dir, cut)
-                   : 0.0;
+    out.rmse = std::sqrt(std::clamp(view.coverage, 0.0, 1.0)) *
+               model.cutDifference(dir, gridCutOf(paged, drawn));
     return out;
 }
 

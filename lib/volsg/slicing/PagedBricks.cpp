@@ -248,7 +248,6 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
         drawnKeys.push_back(key);
     }
     slots.wanted = chosen.wanted;
-    v.pagedDrawn = drawnKeys;
     v.layout = BrickLayout::fromBricks(slots.bricks, layout.level(0).dimensions, layout.spacing(),
                                        texelBytes);
     v.hasLayout = true;
@@ -272,6 +271,7 @@ PagingStats preparePagedBricks(FrameContext& frame, PagedSlots& slots, VolumeTex
     stats.budgetLimited = chosen.budgetLimited;
     stats.wanted = int(chosen.wanted.size());
     stats.converged = chosen.converged() && !heldBack && drawnKeys.size() == chosen.drawn.size();
+    v.pagedDrawn = std::move(drawnKeys); // LevelOfDetailError reads the levels drawn
     const BrickCacheStats host = paged.cache().stats();
     stats.hostBytes = paged.hostBytes();
     stats.hostBudget = paged.options().hostBudget;

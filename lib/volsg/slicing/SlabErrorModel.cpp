@@ -55,6 +55,16 @@ struct GridSampler {
     std::size_t strideY = 1, strideZ = 1;
     double lowest = 0.0, highest = 0.0;
 
+    /// Samples `g` (its dimensions, spacing and finite extremes) over the box `half` keeps.
+    void use(const VolumeGrid& g) {
+        grid = &g;
+        dims = g.dimensions();
+        spacing = g.spacing();
+        strideY = std::size_t(dims.x);
+        strideZ = std::size_t(dims.x) * std::size_t(dims.y);
+        if (g.type() == VoxelType::Float) std::tie(lowest, highest) = g.minMax();
+    }
+
     template <class T> double voxel(std::size_t i) const {
         const double x = double(grid->data<T>()[i]);
         if constexpr (std::is_same_v<T, float>) {
@@ -250,13 +260,8 @@ struct SlabErrorModel::Impl {
     /// A sampler of `other`, a grid over the same box as `grid` at its own resolution.
     GridSampler samplerOf(const VolumeGrid& other) const {
         GridSampler g = grid;
-        g.grid = &other;
         g.tags = nullptr;
-        g.dims = other.dimensions();
-        g.spacing = other.spacing();
-        g.strideY = std::size_t(g.dims.x);
-        g.strideZ = std::size_t(g.dims.x) * std::size_t(g.dims.y);
-        if (other.type() == VoxelType::Float) std::tie(g.lowest, g.highest) = other.minMax();
+        g.use(other);
         return g;
     }
     glm::dvec3 slicedDvr(const ModelRay& ray, const glm::dvec3& dir, const PlaneLayout& layout,
@@ -612,15 +617,10 @@ SlabErrorModel::SlabErrorModel(const RayCastVolume& volume, std::optional<ModelR
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     const VolumeGrid& g = *volume.data;
-    m.grid.grid = &g;
-    m.grid.dims = g.dimensions();
-    m.grid.spacing = g.spacing();
+    m.grid.use(g);
     m.grid.half = 0.5 * g.extent();
     m.regionMin = region ? glm::max(region->min, -m.grid.half) : -m.grid.half;
     m.regionMax = region ? glm::min(region->max, m.grid.half) : m.grid.half;
-    m.grid.strideY = std::size_t(m.grid.dims.x);
-    m.grid.strideZ = std::size_t(m.grid.dims.x) * std::size_t(m.grid.dims.y);
-    if (g.type() == VoxelType::Float) std::tie(m.grid.lowest, m.grid.highest) = g.minMax();
     const auto natural = g.naturalRange();
     m.table.build(volume.transferFunctions, {natural.first, natural.second});
     m.tagged = volume.tags && m.table.rows() > 1;
@@ -757,9 +757,7 @@ double SlabErrorModel::cutDifference(int dir, const GridCut& cut) {
     const auto cellAt = [&](const glm::dvec3& p) {
         const glm::ivec3 c = glm::clamp(glm::ivec3(glm::floor((p - cut.boxMin) / cut.cellSize)),
                                         glm::ivec3(0), cut.cells - 1);
-        return cut.cellGrid[std::size_t(c.x) +
-                            std::size_t(cut.cells.x) *
-                                (std::size_t(c.y) + std::size_t(cut.cells.y) * std::size_t(c.z))];
+        return cut.cellGrid[cut.indexOf(c)];
     };
     std::vector<GridSampler> samplers;
     for (const VolumeGrid* g : cut.grids)

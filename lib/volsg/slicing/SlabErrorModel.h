@@ -62,6 +62,10 @@ struct GridCut {
     std::vector<std::uint8_t> cellGrid; ///< per cell (x fastest), an index into grids
     std::vector<const VolumeGrid*> grids;
     std::uint64_t key = 0; ///< the cut's identity, for the cache
+    std::size_t indexOf(const glm::ivec3& c) const {
+        return std::size_t(c.x) +
+               std::size_t(cells.x) * (std::size_t(c.y) + std::size_t(cells.y) * std::size_t(c.z));
+    }
 };
 
 /// A box of the volume (local coordinates) the model's rays are confined to.
@@ -136,7 +140,6 @@ private:
     std::map<std::pair<int, SlabQuadrature>, CachedRmse> cache_;
     std::map<std::pair<int, int>, double> preClassifiedCache_;
     std::vector<std::pair<std::pair<int, std::uint64_t>, double>> cutCache_; ///< newest last
-
     int evaluations_ = 0;
 };
 
