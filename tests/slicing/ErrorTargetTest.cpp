@@ -245,6 +245,30 @@ TEST_CASE("the error model's choice is the cheapest that meets the target") {
     CHECK(predictImageRmse(model, view, denser) < c.predictedRmse);
 }
 
+TEST_CASE("the error model predicts the same on one thread and on several") {
+    // Each ray is integrated by one thread, so the predictions are equal bit for bit: DVR
+    // (tagged, so several segment tables are built before the threads read them) and MIP.
+    RayCastVolume tagged = labelledVolume(20, {{-1, transferFunction(spike(0.3, 0.35, 0.4, 0.5))},
+                                               {1, transferFunction(spike(0.6, 0.65, 0.7, 0.9))},
+                                               {2, transferFunction(spike(0.2, 0.3, 0.4, 0.7))}});
+    RayCastVolume mip = marschnerLobbVolume();
+    mip.mode = VolumeRenderMode::MIP;
+    for (const RayCastVolume* v : {&tagged, &mip}) {
+        SlabErrorModel one(*v), several(*v);
+        one.setThreads(1);
+        several.setThreads(4);
+        for (const int dir : {3, 50, SlabErrorModel::kDirections + 20})
+            for (const double spacing : {0.5, 2.0, 8.0}) {
+                SlabQuadrature q;
+                q.planeSpacingL0 = spacing;
+                q.samplesPerPlane = spacing > 1.0 ? 4 : 1;
+                const double a = one.rayRmse(dir, q), b = several.rayRmse(dir, q);
+                CHECK(a > 0.0);
+                CHECK(a == b);
+            }
+    }
+}
+
 TEST_CASE_FIXTURE(GlFixture, "ShearWarpVolume predicts its error and picks the interactive step") {
     const std::string scene = R"(#Inventor V2.1 ascii
 Separator {

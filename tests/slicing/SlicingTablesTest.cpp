@@ -129,3 +129,29 @@ TEST_CASE("pre-integration averages a spike's extinction over the segment it cro
     CHECK(t[3] == doctest::Approx(s.a).epsilon(1e-6));
     CHECK(t[0] == doctest::Approx(s.r).epsilon(1e-6));
 }
+
+TEST_CASE("an absorbing segment is the segment, and a transparent one is zero") {
+    // A spike with transparent space on both sides and an opaque plateau, so every branch is
+    // crossed: point segments inside and outside, segments across and beside the features.
+    TransferFunction1D tf =
+        withAlpha({{0, 0}, {0.3, 0}, {0.35, 0.8}, {0.4, 0}, {0.7, 0}, {0.8, 0.5}});
+    tf.setChannel(TransferFunction1D::Blue, {{0, 0.1}, {1, 0.9}});
+    PreIntegrationTable table;
+    table.build(tf);
+    int absorbing = 0, transparent = 0;
+    for (int i = 0; i <= 40; ++i)
+        for (int j = 0; j <= 40; ++j) {
+            const double f = i / 40.0, b = j / 40.0;
+            const glm::dvec4 full = table.segment(f, b);
+            const glm::dvec4 got = table.absorbingSegment(f, b);
+            if (full.a > 1e-12) {
+                ++absorbing;
+                CHECK(got == full); // bit for bit: the model's predictions must not move
+            } else {
+                ++transparent;
+                CHECK(got == glm::dvec4(0.0));
+            }
+        }
+    CHECK(absorbing > 100);
+    CHECK(transparent > 100);
+}

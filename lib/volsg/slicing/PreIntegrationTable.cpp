@@ -49,6 +49,22 @@ glm::dvec4 PreIntegrationTable::cumulativeAt(double v) const {
     return cumulative_[std::size_t(i)] * (1.0 - f) + cumulative_[std::size_t(i) + 1] * f;
 }
 
+glm::dvec4 PreIntegrationTable::absorbingSegment(double vFront, double vBack) const {
+    vFront = std::clamp(vFront, 0.0, 1.0);
+    vBack = std::clamp(vBack, 0.0, 1.0);
+    const double width = vBack - vFront;
+    if (std::abs(width) < 1e-9) {
+        // segment()'s point case: the colour and tau at vFront, where its opacity is positive.
+        if (!(function_.evaluate(TransferFunction1D::Alpha, vFront) > 0.0)) return glm::dvec4(0.0);
+        const glm::dvec4 p = pointAt(vFront);
+        if (!(p.a > 1e-12)) return glm::dvec4(0.0);
+        return {glm::dvec3(p) * p.a / p.a, p.a}; // rounded as segment() rounds it
+    }
+    const glm::dvec4 mean = (cumulativeAt(vBack) - cumulativeAt(vFront)) / width;
+    if (mean.a > 1e-12) return {glm::dvec3(mean) / mean.a, mean.a};
+    return glm::dvec4(0.0);
+}
+
 glm::dvec4 PreIntegrationTable::segment(double vFront, double vBack) const {
     vFront = std::clamp(vFront, 0.0, 1.0);
     vBack = std::clamp(vBack, 0.0, 1.0);

@@ -37,6 +37,10 @@ public:
     const std::vector<float>& texels() const { return texels_; }
     /// The exact entry for any (v_front, v_back) in [0, 1] (what the texels sample).
     glm::dvec4 segment(double vFront, double vBack) const;
+    /// segment() where the segment absorbs (Dmean > 1e-12), and all zero where it does not: a
+    /// ray integral never uses a transparent segment's colour, and skipping it saves the
+    /// transfer function's evaluation on the empty space that most rays cross.
+    glm::dvec4 absorbingSegment(double vFront, double vBack) const;
 
 private:
     glm::dvec4

@@ -2,12 +2,15 @@
 #include <volsg/slicing/SlabErrorModel.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <thread>
 #include <tuple>
 
+#include <volsg/core/WorkerPool.h>
 #include <volsg/slicing/ProxyPlaneCutter.h>
 
 namespace volsg {
@@ -199,6 +202,36 @@ struct SlabErrorModel::Impl {
     VolumeRenderMode mode = VolumeRenderMode::DVR;
     /// The rays' and the lattice's box (local coordinates): the volume's, or a region of it.
     glm::dvec3 regionMin{0.0}, regionMax{0.0};
+    /// Integrates rays on every core: a new direction's rays are the model's main cost, and
+    /// the choice runs before the frame's draws, while the rasteriser's threads are idle.
+    WorkerPool pool;
+    int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, 4);
+
+    /// body(i) for i in [0, count), spread over the pool in blocks; body must only write
+    /// what index i owns, so the results are the same as one thread's.
+    template <class Body> void forEachIndex(std::size_t count, Body&& body) {
+        constexpr std::size_t kBlock = 4;
+        std::atomic<std::size_t> next{0};
+        const int workers = int(std::min<std::size_t>(std::size_t(threads), count / kBlock + 1));
+        pool.run(workers, [&](int) {
+            for (std::size_t first; (first = next.fetch_add(kBlock)) < count;)
+                for (std::size_t i = first; i < std::min(first + kBlock, count); ++i)
+                    body(i);
+        });
+    }
+    /// Builds the segment tables every ray may need, so the threads only read them.
+    void preparePreTables() {
+        if (!tagged) {
+            pre(0);
+            return;
+        }
+        std::vector<bool> built(std::size_t(table.rows()), false);
+        for (const std::uint16_t row : table.tagRows())
+            if (row < built.size() && !built[row]) {
+                pre(row);
+                built[row] = true;
+            }
+    }
 
     int rowAt(const glm::dvec3& p) const {
         return tagged ? int(table.tagRows()[std::size_t(grid.tag(p))]) : 0;
@@ -339,9 +372,12 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
     const int across = std::clamp(int(std::sqrt(kSampleBudget / std::max(samplesPerRay, 1.0))),
                                   kMinRaysAcross, kMaxRaysAcross);
     s->rays = castRays(dirIndex, across);
-    for (const ModelRay& ray : s->rays)
-        s->truth.push_back(mode == VolumeRenderMode::DVR ? truthDvr(ray)
-                                                         : truthExtreme(ray, ray.dir));
+    s->truth.resize(s->rays.size());
+    if (mode == VolumeRenderMode::DVR) preparePreTables();
+    forEachIndex(s->rays.size(), [&](std::size_t i) {
+        const ModelRay& ray = s->rays[i];
+        s->truth[i] = mode == VolumeRenderMode::DVR ? truthDvr(ray) : truthExtreme(ray, ray.dir);
+    });
     sets[dirIndex] = std::move(s);
     return *sets[dirIndex];
 }
@@ -366,8 +402,8 @@ glm::dvec3 SlabErrorModel::Impl::truthDvrOf(const ModelRay& ray, const DataAt& d
         const glm::dvec3 q = ray.origin + (ray.t0 + (i + 1) * h) * ray.dir;
         const double dNext = dataAt(q);
         const int row = rowAt(0.5 * (p + q));
-        const glm::dvec4 seg = pre(row).segment(vOf(dPrev, row), vOf(dNext, row));
-        c.add(glm::dvec3(seg), seg.a * h / L0);
+        const glm::dvec4 seg = pre(row).absorbingSegment(vOf(dPrev, row), vOf(dNext, row));
+        if (seg.a > 0.0) c.add(glm::dvec3(seg), seg.a * h / L0);
         p = q;
         dPrev = dNext;
     }
@@ -688,6 +724,10 @@ int SlabErrorModel::nearestDirection(const glm::dvec3& localDirection, bool wide
         }
     }
     return wide ? best + kDirections : best;
+}
+
+void SlabErrorModel::setThreads(int threads) {
+    impl_->threads = std::clamp(threads, 1, 64);
 }
 
 bool SlabErrorModel::hasDirection(int dir) const {

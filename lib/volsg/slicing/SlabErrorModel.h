@@ -121,6 +121,9 @@ public:
     bool hasDirection(int dir) const;
     /// The box's depth along direction `dir`, in L0.
     double depthL0(int dir) const;
+    /// Threads a new direction's rays are integrated on (default: the machine's cores, at most
+    /// 4). The predictions do not depend on it: each ray is integrated by one thread.
+    void setThreads(int threads);
     /// Rays cast and quadratures evaluated so far (a cost figure for tests and reports).
     int evaluations() const { return evaluations_; }
 

@@ -34,12 +34,6 @@ glm::dvec2 TransferFunction1D::resolvedDataRange(const VolumeGrid& grid) const {
     return {lo, hi};
 }
 
-double TransferFunction1D::normalise(double d, double lo, double hi) {
-    if (std::isnan(d)) return 0.0; // NaN counts as the range minimum
-    if (hi == lo) return d >= lo ? 1.0 : 0.0;
-    return std::clamp((d - lo) / (hi - lo), 0.0, 1.0);
-}
-
 glm::dvec4 TransferFunction1D::evaluate(double v) const {
     return {channels_[Red](v), channels_[Green](v), channels_[Blue](v), channels_[Alpha](v)};
 }

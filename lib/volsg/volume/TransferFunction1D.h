@@ -1,6 +1,8 @@
 #pragma once
 // A transfer function: data value -> normalised value v -> colour and opacity.
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -36,7 +38,11 @@ public:
 
     /// `clamp((d - lo) / (hi - lo), 0, 1)`; for hi == lo: 0 below lo, 1 at and above it.
     /// NaN gives 0; +-infinity give the clamped ends.
-    static double normalise(double d, double lo, double hi);
+    static double normalise(double d, double lo, double hi) {
+        if (std::isnan(d)) return 0.0; // NaN counts as the range minimum
+        if (hi == lo) return d >= lo ? 1.0 : 0.0;
+        return std::clamp((d - lo) / (hi - lo), 0.0, 1.0);
+    }
 
     double evaluate(Channel channel, double v) const { return channels_[channel](v); }
     glm::dvec4 evaluate(double v) const; ///< (red, green, blue, alpha) at v
