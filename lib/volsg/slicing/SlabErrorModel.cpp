@@ -422,14 +422,27 @@ glm::dvec3 SlabErrorModel::Impl::truthExtremeOf(const ModelRay& ray, const glm::
     const bool maximum = mode == VolumeRenderMode::MIP;
     double best = maximum ? -1.0 : 2.0;
     int bestRow = 0;
-    for (int i = 0; i <= n; ++i) {
-        const glm::dvec3 p = ray.origin + (ray.t0 + len * i / n) * dir;
+    const auto take = [&](double t) {
+        const glm::dvec3 p = ray.origin + t * dir;
         const int row = rowAt(p);
         const double v = vOf(dataAt(p), row);
         if (maximum ? v > best : v < best) {
             best = v;
             bestRow = row;
         }
+    };
+    for (int i = 0; i <= n; ++i)
+        take(ray.t0 + len * i / n);
+    // The trilinear field is a cubic between voxel-centre planes and has its kinks on them,
+    // where a tent-shaped extreme lies: every crossing is sampled too, so the extreme is exact
+    // there (evenly spaced samples alone came out below it, and below the slicer's crossings).
+    const glm::dvec3 voxelsPerT = dir / grid.spacing;
+    const glm::dvec3 u0 = (ray.origin + grid.half) / grid.spacing;
+    for (int k = 0; k < 3; ++k) {
+        if (std::abs(voxelsPerT[k]) < 1e-15) continue;
+        const double ua = u0[k] + ray.t0 * voxelsPerT[k], ub = u0[k] + ray.t1 * voxelsPerT[k];
+        for (double c = std::ceil(std::min(ua, ub) - 0.5) + 0.5; c <= std::max(ua, ub); c += 1.0)
+            take((c - u0[k]) / voxelsPerT[k]);
     }
     const glm::dvec4 rgba = table.function(bestRow).evaluate(best);
     return glm::dvec3(rgba) * std::min(rgba.a, TransferTable::kMaxOpacity);
@@ -730,6 +743,13 @@ void SlabErrorModel::setThreads(int threads) {
     impl_->threads = std::clamp(threads, 1, 64);
 }
 
+double SlabErrorModel::samplesOfFullEvaluation(int dir, double samplesPerL0) {
+    double length = 0.0;
+    for (const ModelRay& ray : impl_->raysAlong(dir).rays)
+        length += ray.t1 - ray.t0;
+    return length / L0_ * samplesPerL0;
+}
+
 bool SlabErrorModel::hasDirection(int dir) const {
     return impl_->sets[dir] != nullptr;
 }
@@ -768,6 +788,7 @@ double SlabErrorModel::rayRmseUpTo(int dir, const SlabQuadrature& q, double limi
                                    : m.slicedExtreme(ray, ray.dir, ray.along(layout), q);
         const glm::dvec3 e = got - s.truth[i];
         sum += glm::dot(e, e) / 3.0;
+        samplesEvaluated_ += (ray.t1 - ray.t0) / L0_ * q.samplesPerL0();
         ++visited;
         if (sum > stopSum) break;
     }

@@ -124,6 +124,12 @@ public:
     /// Threads a new direction's rays are integrated on (default: the machine's cores, at most
     /// 4). The predictions do not depend on it: each ray is integrated by one thread.
     void setThreads(int threads);
+    /// The samples quadratures have taken on the model's rays so far (each visited ray's length
+    /// in L0 times the quadrature's samples per L0): a deterministic measure of the work the
+    /// search has done, unlike its time.
+    double samplesEvaluated() const { return samplesEvaluated_; }
+    /// The samples one evaluation of every ray of direction `dir` at `samplesPerL0` takes.
+    double samplesOfFullEvaluation(int dir, double samplesPerL0);
     /// Rays cast and quadratures evaluated so far (a cost figure for tests and reports).
     int evaluations() const { return evaluations_; }
 
@@ -144,6 +150,7 @@ private:
     std::map<std::pair<int, int>, double> preClassifiedCache_;
     std::vector<std::pair<std::pair<int, std::uint64_t>, double>> cutCache_; ///< newest last
     int evaluations_ = 0;
+    double samplesEvaluated_ = 0.0;
 };
 
 } // namespace volsg

@@ -51,8 +51,9 @@ double predictImageRmseUpTo(SlabErrorModel& model, const QualityView& view, cons
                             double limit);
 
 /// The cheapest quadrature (by the cost model in SlicingQuality.cpp) whose predicted image RMSE
-/// is at most the target, among those the request leaves free; the one with the least error
-/// when none is (meetsTarget false).
+/// is at most the target, among those the request leaves free. When the target is below the
+/// model's floor (measured on each kind's dearest candidates), the cheapest within 1.2 times
+/// that floor (meetsTarget false); the one with the least error found if even that fails.
 QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
                             const QualityRequest& request);
 
