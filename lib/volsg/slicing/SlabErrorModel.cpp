@@ -840,28 +840,35 @@ double SlabErrorModel::cutDifference(int dir, const GridCut& cut) {
     const double cutStep = std::max(m.truthStep, 0.25 * gridVoxel);
     const auto ownAt = [&m](const glm::dvec3& p) { return m.grid.data(p); };
     const double step = 0.5 * std::min({cut.cellSize.x, cut.cellSize.y, cut.cellSize.z});
-    std::vector<std::size_t> crossing;
-    for (std::size_t i = 0; i < rays.size(); ++i) {
+    std::vector<std::uint8_t> crosses(rays.size(), 0);
+    m.forEachIndex(rays.size(), [&](std::size_t i) {
         const ModelRay& ray = rays[i];
         for (double t = ray.t0; t <= ray.t1; t += step)
             if (cellAt(ray.origin + t * ray.dir) != 0) {
-                crossing.push_back(i);
+                crosses[i] = 1;
                 break;
             }
-    }
+    });
+    std::vector<std::size_t> crossing;
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        if (crosses[i]) crossing.push_back(i);
     double rmse = 0.0;
     if (!crossing.empty()) {
         const std::size_t stride = std::max<std::size_t>(1, crossing.size() / kCutRaysIntegrated);
-        double sum = 0.0;
-        std::size_t integrated = 0;
-        for (std::size_t k = 0; k < crossing.size(); k += stride, ++integrated) {
-            const ModelRay& ray = rays[crossing[k]];
+        const std::size_t integrated = (crossing.size() + stride - 1) / stride;
+        if (mode_ == VolumeRenderMode::DVR) m.preparePreTables();
+        std::vector<double> squared(integrated);
+        m.forEachIndex(integrated, [&](std::size_t j) {
+            const ModelRay& ray = rays[crossing[j * stride]];
             const glm::dvec3 e =
                 mode_ == VolumeRenderMode::DVR
                     ? m.truthDvrOf(ray, dataAt, cutStep) - m.truthDvrOf(ray, ownAt, cutStep)
                     : m.truthExtremeOf(ray, ray.dir, dataAt) - m.truthExtreme(ray, ray.dir);
-            sum += glm::dot(e, e) / 3.0;
-        }
+            squared[j] = glm::dot(e, e) / 3.0;
+        });
+        double sum = 0.0; // in ray order, as one thread adds them
+        for (const double e : squared)
+            sum += e;
         const double share =
             double(crossing.size()) / double(std::max<std::size_t>(rays.size(), 1));
         rmse = std::sqrt(share * sum / double(integrated));
