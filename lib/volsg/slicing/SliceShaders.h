@@ -388,8 +388,19 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
     vec3 emitted = vec3(0.0);
     float depthSum = 0.0;
     float transmitted = 1.0; // e^-depthSum
+    // The texel's v and its row-0 table coordinate as one multiply-add each (the general
+    // loop's normalised() and classify(), with their per-sample constants taken out).
+    vec2 size = vec2(textureSize(uTable, 0));
+    float tableScale = float(ENTRIES - 1) / size.x, tableOffset = 0.5 / size.x;
+    float rowY = 0.5 / size.y;
+    bool stepRange = range.x == range.y;
+    float vScale = stepRange ? 0.0 : uDataScale / (range.y - range.x);
+    float vOffset = stepRange ? 0.0 : (uDataOffset - range.x) / (range.y - range.x);
     for (int j = j0; j <= j1; ++j) {
-        vec4 rgba = classify(normalised(dataAt(tc + float(j) * tcStep), range), 0);
+        float texel = texture(uData, tc + float(j) * tcStep).r;
+        float v = stepRange ? (texel * uDataScale + uDataOffset >= range.x ? 1.0 : 0.0)
+                            : clamp(texel * vScale + vOffset, 0.0, 1.0);
+        vec4 rgba = texture(uTable, vec2(v * tableScale + tableOffset, rowY));
         float D = rgba.a * lengthL0;
         float e = exp(-D);
         emitted += transmitted * (D < 0.01 ? opacityOf(D) : 1.0 - e) * rgba.rgb;
