@@ -152,9 +152,29 @@ TEST_CASE_FIXTURE(GlFixture, "MIP and MINIP on thick slabs still find thin peaks
         MESSAGE(name << ", 8 planes: rmse " << thin.difference.rmse / k8Bit
                      << "/255; 8 planes x 4: " << thick.difference.rmse / k8Bit << "/255, max "
                      << thick.difference.max / k8Bit << "/255");
-        CHECK(thick.difference.rmse < 0.5 * thin.difference.rmse);
+        // (MINIP's dip lies on the box's face here, where every slab's end now finds it: 0.)
+        CHECK(thick.difference.rmse <= 0.5 * thin.difference.rmse);
         CHECK(thick.difference.rmse < 2.0 * k8Bit);
     }
+}
+
+TEST_CASE_FIXTURE(GlFixture, "MIP with peaks finds a structure the box's face cuts") {
+    // Bright where the box's front face cuts the data, darker inside: along rays entering
+    // through that face the extreme lies at the entry, between voxel-centre crossings. A slab
+    // that began there once took its parts' middles and crossings only (chest CT: 90/255
+    // missed along a silhouette); its ends count now. Few thick slabs, as error targets choose.
+    const RayCastVolume v = volumeOf(
+        makeGrid({24, 24, 12}, VoxelType::UByte, {1.0, 1.0, 2.0},
+                 [](const glm::dvec3& p) {
+                     return std::clamp(0.5 + 0.5 * p.z + 0.1 * std::sin(5.0 * p.x), 0.0, 1.0);
+                 }),
+        transferFunction({{0, 0}, {1, 1}}), VolumeRenderMode::MIP);
+    auto camera = framing(*v.data, {0.5f, 0.7f, 0.6f});
+    const Comparison c = compareGrid(renderer, v, planesAndSamples(2, 8), *camera, 64);
+    MESSAGE("face-cut MIP, 2 planes x 8 with peaks: rmse "
+            << c.difference.rmse / k8Bit << "/255, max " << c.difference.max / k8Bit << "/255");
+    keepImages(c, "mip-face-cut");
+    checkDifference(c.difference, 0.5, 4.0, "face-cut MIP, 2 planes x 8: ");
 }
 
 TEST_CASE("MIP without peak sampling converges with the samples and misses thin peaks") {

@@ -369,8 +369,13 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
     // As many rays as a budget of model samples allows: errors often sit on a few pixels (a
     // thin feature's rim, a silhouette), which a dozen rays across can miss or over-weigh.
     const double samplesPerRay = 2.0 * depth / truthStep;
-    const int across = std::clamp(int(std::sqrt(kSampleBudget / std::max(samplesPerRay, 1.0))),
-                                  kMinRaysAcross, kMaxRaysAcross);
+    // MIP and MINIP: twice as many across. Their errors sit on fewer pixels (thin bright
+    // structures a thick slab's samples pass by), which the DVR count sampled too sparsely:
+    // on the chest CT the default measured 0.72/255 at a target of 0.5, and 0.38 with these.
+    const double scale = mode == VolumeRenderMode::DVR ? 1.0 : 2.0;
+    const int across =
+        std::clamp(int(scale * std::sqrt(kSampleBudget / std::max(samplesPerRay, 1.0))),
+                   kMinRaysAcross, int(scale * kMaxRaysAcross));
     s->rays = castRays(dirIndex, across);
     s->truth.resize(s->rays.size());
     if (mode == VolumeRenderMode::DVR) preparePreTables();
@@ -549,12 +554,16 @@ glm::dvec3 SlabErrorModel::Impl::slicedExtreme(const ModelRay& ray, const glm::d
             for (int j = 0; j < s.parts; ++j)
                 take(s.a + (j + 0.5) * part);
         if (q.peaks) {
-            // Voxel-centre crossings: with one part the nearest plane along each axis to the
-            // sample, with more every crossing in the slab.
+            // The slab's ends on the box's face (a structure the face cuts has its extreme
+            // there), and the voxel-centre crossings: with one part the nearest
+            // plane along each axis to the sample, with more (or a face's sliver) every
+            // crossing in the slab.
+            if (s.a == ray.t0) take(s.a);
+            if (s.b == ray.t1) take(s.b);
             const glm::dvec3 u0 = (ray.origin + s.plane * dir + grid.half) / grid.spacing;
             for (int k = 0; k < 3; ++k) {
                 if (std::abs(voxelsPerT[k]) < 1e-15) continue;
-                if (s.parts == 1) {
+                if (s.parts == 1 && !s.face) {
                     const double t = s.plane + (std::floor(u0[k]) + 0.5 - u0[k]) / voxelsPerT[k];
                     if (t >= s.a && t <= s.b) take(t);
                 } else {

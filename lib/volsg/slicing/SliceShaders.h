@@ -308,6 +308,13 @@ float valueAt(vec3 x, out int info) {
 #endif
 }
 
+// Whether a slab's end at x lies on the volume box's face, where a structure the face cuts has
+// its extreme (between crossings, so no other sample finds it). Only there: ends elsewhere
+// (half-way to a plane, a brick's seam) differ between bricked and whole volumes.
+bool onVolumeFace(vec3 x) {
+    return any(greaterThan(abs(x), uHalfExtent * (1.0 - 1e-4)));
+}
+
 // Keeps the extreme v of the samples it is given, with the row and BoxClip region of that
 // sample; samples in a removed BoxClip region do not count.
 void considerExtreme(vec3 x, inout float best, inout int bestInfo) {
@@ -625,7 +632,9 @@ void main() {
     // The extreme v over the slab. With peaks (the default), one part: at the sample point and
     // where the ray crosses the voxel-centre plane nearest to it along each axis (the trilinear
     // field's kinks, where peaks of thin structures sit); more parts: the middle of each part
-    // and every crossing of a voxel-centre plane in the slab, so thick slabs still find them.
+    // and every crossing of a voxel-centre plane in the slab, so thick slabs still find them;
+    // a face's sliver (as long as a plane spacing, with few planes) as several parts. Either
+    // way the slab's ends where they lie on the volume box's face.
     float best = MODE == 1 ? -1.0 : 2.0;
     int bestInfo = 0;
     vec3 u0 = voxelCoord(origin);
@@ -654,7 +663,12 @@ void main() {
             float refined = refinedTop(k);
             best = clamp(MODE == 1 ? refined : -refined, 0.0, 1.0);
         }
-    } else if (parts == 1) {
+    } else if (parts == 1 && !uFacePass) {
+        // Both ends of the slab too: where it ends at the box's face, a structure cut by the
+        // face has its extreme there (chest CT: up to 90/255 missed along a silhouette).
+        vec3 ends[2] = vec3[2](origin - dir * front, origin + dir * back);
+        for (int e = 0; e < 2; ++e)
+            if (onVolumeFace(ends[e])) considerExtreme(ends[e], best, bestInfo);
         vec3 tCentre = (floor(u0) + 0.5 - u0) / mix(du, vec3(1e-30), equal(du, vec3(0.0)));
         vec4 ts = vec4(uFacePass ? 0.5 * back : 0.0, tCentre);
         for (int i = 0; i < 4; ++i) {
@@ -667,6 +681,9 @@ void main() {
         for (int j = 0; j < parts; ++j)
             considerExtreme(origin + dir * (-front + (float(j) + 0.5) * partLength), best,
                             bestInfo);
+        vec3 ends[2] = vec3[2](origin - dir * front, origin + dir * back); // as with one part
+        for (int e = 0; e < 2; ++e)
+            if (onVolumeFace(ends[e])) considerExtreme(ends[e], best, bestInfo);
         for (int axis = 0; axis < 3; ++axis) {
             float d = du[axis];
             if (d == 0.0) continue;
@@ -674,7 +691,9 @@ void main() {
             float ub = u0[axis] + d * back;
             float first = ceil(min(ua, ub) - 0.5) + 0.5;
             float last = max(ua, ub);
-            for (int k = 0; k < 256 && first + float(k) <= last; ++k)
+            // (The bound only guards the loop: a slab lies in one brick, at most a texture's
+            // side, 16384 texels, across; a lower bound dropped crossings of thick slabs.)
+            for (int k = 0; k < 16384 && first + float(k) <= last; ++k)
                 considerExtreme(origin + dir * ((first + float(k) - u0[axis]) / d), best,
                                 bestInfo);
         }
