@@ -40,6 +40,13 @@ ref_ptr<Node> readScene(const TempDir& dir, const std::string& name, const std::
     return volsg::readScene(file);
 }
 
+/// Writes Marschner-Lobb 64^3 (8-bit) as dir/ml.zarr, a pyramid of `chunk`^3 chunks.
+void writeMarschnerLobbPyramid(const TempDir& dir, int chunk) {
+    PyramidOptions pyramid;
+    pyramid.chunk = chunk;
+    writeOmeZarrPyramid(*makeMarschnerLobb(64, VoxelType::UByte), dir.file("ml.zarr"), pyramid);
+}
+
 Volume& volumeOf(Node& root) {
     const std::vector<Node*> found = findAll(root, Volume::classType(), true);
     REQUIRE(found.size() == 1);
@@ -63,9 +70,7 @@ Image renderConverged(Renderer& renderer, Node& scene, const RenderOptions& opti
 TEST_CASE_FIXTURE(GlFixture, "a paged volume meets its error target with planes chosen on the "
                              "stand-in") {
     const TempDir dir("volsg-paged-target");
-    PyramidOptions pyramid;
-    pyramid.chunk = 16;
-    writeOmeZarrPyramid(*makeMarschnerLobb(64, VoxelType::UByte), dir.file("ml.zarr"), pyramid);
+    writeMarschnerLobbPyramid(dir, 16);
 
     RenderOptions options;
     options.width = options.height = 96;
@@ -104,9 +109,7 @@ TEST_CASE_FIXTURE(GlFixture, "a paged volume meets its error target with planes 
 TEST_CASE_FIXTURE(GlFixture, "a paged frame's predicted error includes its level of detail, "
                              "measured on the levels held whole") {
     const TempDir dir("volsg-paged-lod");
-    PyramidOptions pyramid;
-    pyramid.chunk = 8;
-    writeOmeZarrPyramid(*makeMarschnerLobb(64, VoxelType::UByte), dir.file("ml.zarr"), pyramid);
+    writeMarschnerLobbPyramid(dir, 8);
     RenderOptions options;
     options.width = options.height = 48;
     // The same planes on both sides, so the difference is the level of detail's.

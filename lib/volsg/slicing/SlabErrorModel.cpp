@@ -122,6 +122,19 @@ struct GridSampler {
     }
 };
 
+/// visit(t) at every t in [ta, tb] where the line u0 + t voxelsPerT (voxel coordinates) crosses
+/// a voxel-centre plane (u = i + 1/2), per axis in turn: the trilinear field's kinks.
+template <class Visit>
+void forEachCrossing(const glm::dvec3& u0, const glm::dvec3& voxelsPerT, double ta, double tb,
+                     Visit&& visit) {
+    for (int k = 0; k < 3; ++k) {
+        if (std::abs(voxelsPerT[k]) < 1e-15) continue;
+        const double ua = u0[k] + ta * voxelsPerT[k], ub = u0[k] + tb * voxelsPerT[k];
+        for (double c = std::ceil(std::min(ua, ub) - 0.5) + 0.5; c <= std::max(ua, ub); c += 1.0)
+            visit((c - u0[k]) / voxelsPerT[k]);
+    }
+}
+
 /// One ray through the box near a direction d: x(t) = origin + t dir (|dir| = 1), with
 /// dot(origin, d) = 0, so the view depth along d is t * depthPerT.
 struct ModelRay {
@@ -219,8 +232,12 @@ struct SlabErrorModel::Impl {
                     body(i);
         });
     }
-    /// Builds the segment tables every ray may need, so the threads only read them.
+    /// Builds the segment tables every ray may need, so the threads only read them (once: the
+    /// transfer functions are the model's for its life; tagRows has 65536 entries to scan).
+    bool preTablesReady = false;
     void preparePreTables() {
+        if (preTablesReady) return;
+        preTablesReady = true;
         if (!tagged) {
             pre(0);
             return;
@@ -444,14 +461,8 @@ glm::dvec3 SlabErrorModel::Impl::truthExtremeOf(const ModelRay& ray, const glm::
     // The trilinear field is a cubic between voxel-centre planes and has its kinks on them,
     // where a tent-shaped extreme lies: every crossing is sampled too, so the extreme is exact
     // there (evenly spaced samples alone came out below it, and below the slicer's crossings).
-    const glm::dvec3 voxelsPerT = dir / grid.spacing;
-    const glm::dvec3 u0 = (ray.origin + grid.half) / grid.spacing;
-    for (int k = 0; k < 3; ++k) {
-        if (std::abs(voxelsPerT[k]) < 1e-15) continue;
-        const double ua = u0[k] + ray.t0 * voxelsPerT[k], ub = u0[k] + ray.t1 * voxelsPerT[k];
-        for (double c = std::ceil(std::min(ua, ub) - 0.5) + 0.5; c <= std::max(ua, ub); c += 1.0)
-            take((c - u0[k]) / voxelsPerT[k]);
-    }
+    forEachCrossing((ray.origin + grid.half) / grid.spacing, dir / grid.spacing, ray.t0, ray.t1,
+                    take);
     const glm::dvec4 rgba = table.function(bestRow).evaluate(best);
     return glm::dvec3(rgba) * std::min(rgba.a, TransferTable::kMaxOpacity);
 }
@@ -564,18 +575,15 @@ glm::dvec3 SlabErrorModel::Impl::slicedExtreme(const ModelRay& ray, const glm::d
             if (s.a == ray.t0) take(s.a);
             if (s.b == ray.t1) take(s.b);
             const glm::dvec3 u0 = (ray.origin + s.plane * dir + grid.half) / grid.spacing;
-            for (int k = 0; k < 3; ++k) {
-                if (std::abs(voxelsPerT[k]) < 1e-15) continue;
-                if (s.parts == 1 && !s.face) {
+            if (s.parts == 1 && !s.face) {
+                for (int k = 0; k < 3; ++k) {
+                    if (std::abs(voxelsPerT[k]) < 1e-15) continue;
                     const double t = s.plane + (std::floor(u0[k]) + 0.5 - u0[k]) / voxelsPerT[k];
                     if (t >= s.a && t <= s.b) take(t);
-                } else {
-                    const double ua = u0[k] + (s.a - s.plane) * voxelsPerT[k];
-                    const double ub = u0[k] + (s.b - s.plane) * voxelsPerT[k];
-                    for (double c = std::ceil(std::min(ua, ub) - 0.5) + 0.5; c <= std::max(ua, ub);
-                         c += 1.0)
-                        take(s.plane + (c - u0[k]) / voxelsPerT[k]);
                 }
+            } else {
+                forEachCrossing(u0, voxelsPerT, s.a - s.plane, s.b - s.plane,
+                                [&](double dt) { take(s.plane + dt); });
             }
         }
         ++slabIndex;

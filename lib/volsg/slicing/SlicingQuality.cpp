@@ -251,42 +251,46 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
             if (!ended[i] && (next == walks.size() || walks[i].cost < walks[next].cost)) next = i;
         return next;
     };
+    // The model's floor, from exact errors of each kind's dearest candidates; it stops at one
+    // within `enough` (then the search goes on as it was).
+    const auto floorOf = [&](double enough) {
+        double floor = std::numeric_limits<double>::infinity();
+        for (const bool kind : kinds) {
+            if (floor <= enough) break;
+            const Walk* densest = nullptr;
+            for (const Walk& w : walks)
+                if ((extreme ? w.peaks : w.pre) == kind &&
+                    (!densest || w.samples > densest->samples))
+                    densest = &w;
+            if (!densest) continue;
+            // The error is not monotone in the rate near the floor (pre-integration's table
+            // adds a little per segment): the least of the top five rates, and at that rate
+            // every sample count of the kind.
+            const auto at = [&](const Walk& w, int step) {
+                return predictImageRmse(model, view,
+                                        quadratureFor(std::pow(2.0, 0.5 * step), w.samples, w.pre,
+                                                      w.peaks, request, view));
+            };
+            int bestStep = kHighestStep;
+            double least = std::numeric_limits<double>::infinity();
+            for (int step = kHighestStep; step > kHighestStep - 5 && !(least <= enough); --step)
+                if (const double e = at(*densest, step); e < least) {
+                    least = e;
+                    bestStep = step;
+                }
+            for (const Walk& w : walks)
+                if (&w != densest && (extreme ? w.peaks : w.pre) == kind && !(least <= enough))
+                    least = std::min(least, at(w, bestStep));
+            floor = std::min(floor, least);
+        }
+        return floor;
+    };
     while (!found) {
         // When the search has worked long, or is about to give up, it checks the floor.
         if (!floorChecked &&
             (model.samplesEvaluated() - startWork > floorCheckWork || openWalk() == walks.size())) {
-            // The floor, from exact errors of each kind's dearest candidates. It stops at one
-            // that meets the target: then the search goes on as it was.
             floorChecked = true;
-            double floor = std::numeric_limits<double>::infinity();
-            for (const bool kind : kinds) {
-                if (floor <= wanted) break;
-                const Walk* densest = nullptr;
-                for (const Walk& w : walks)
-                    if ((extreme ? w.peaks : w.pre) == kind &&
-                        (!densest || w.samples > densest->samples))
-                        densest = &w;
-                if (!densest) continue;
-                // The error is not monotone in the rate near the floor (pre-integration's table
-                // adds a little per segment): the least of the top five rates, and at that rate
-                // every sample count of the kind.
-                const auto at = [&](const Walk& w, int step) {
-                    return predictImageRmse(model, view,
-                                            quadratureFor(std::pow(2.0, 0.5 * step), w.samples,
-                                                          w.pre, w.peaks, request, view));
-                };
-                int bestStep = kHighestStep;
-                double least = std::numeric_limits<double>::infinity();
-                for (int step = kHighestStep; step > kHighestStep - 5 && !(least <= wanted); --step)
-                    if (const double e = at(*densest, step); e < least) {
-                        least = e;
-                        bestStep = step;
-                    }
-                for (const Walk& w : walks)
-                    if (&w != densest && (extreme ? w.peaks : w.pre) == kind && !(least <= wanted))
-                        least = std::min(least, at(w, bestStep));
-                floor = std::min(floor, least);
-            }
+            const double floor = floorOf(wanted);
             if (floor > wanted && std::isfinite(floor)) {
                 // Out of reach: search again, from the cheapest, for a candidate near the floor.
                 wanted = kFloorSlack * floor;
