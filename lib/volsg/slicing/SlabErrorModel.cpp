@@ -875,8 +875,8 @@ double SlabErrorModel::cutDifference(int dir, const GridCut& cut) {
     // model's own are finer for spiky transfer functions, and in level 0's voxels for a
     // paged stand-in): only the difference of the two is wanted, and a segment's v is
     // integrated exactly either way (the segment table). Half a voxel under-predicted a spiky
-    // function's difference by up to 1.3 times more; this costs 25-50 ms a new cut on the
-    // chest CT at 512 x 512.
+    // function's difference by up to 1.3 times more; this cost 25-50 ms a new cut on the
+    // chest CT at 512 x 512 on one thread.
     const double gridVoxel = std::min({m.grid.spacing.x, m.grid.spacing.y, m.grid.spacing.z});
     const double cutStep = std::max(m.truthStep, 0.25 * gridVoxel);
     const auto ownAt = [&m](const glm::dvec3& p) { return m.grid.data(p); };
