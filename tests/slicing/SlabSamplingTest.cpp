@@ -93,10 +93,11 @@ TEST_CASE_FIXTURE(GlFixture,
 }
 
 TEST_CASE("the lean slab loops give the general loops' image") {
-    // Without tags, BoxClip or planeOpacity, DVR and MIP / MINIP without peaks take a lean loop
-    // (no per-part region, plane-opacity or row work; MIP compares texels). A BoxClip that
-    // covers the whole box with opacity 1 and no colour changes nothing in the model but sends
-    // the fragments through the general loops: both images must agree to float rounding.
+    // Without tags, BoxClip or planeOpacity, DVR and MIP / MINIP (with and without peaks) take
+    // a lean loop (no per-part region, plane-opacity or row work; MIP compares texels). A
+    // BoxClip that covers the whole box with opacity 1 and no colour changes nothing in the
+    // model but sends the fragments through the general loops: both images must agree to
+    // float rounding.
     OSMesaContext context;
     RayCastVolume v = marschnerLobbVolume();
     auto camera = framing(*v.data, {0.3f, 0.5f, 1.0f});
@@ -105,12 +106,16 @@ TEST_CASE("the lean slab loops give the general loops' image") {
     everything.extent = glm::dvec3(40.0);
     everything.insideOpacity = 1.0;
     everything.outsideOpacity = 1.0;
-    for (const VolumeRenderMode mode :
-         {VolumeRenderMode::DVR, VolumeRenderMode::MIP, VolumeRenderMode::MINIP}) {
-        INFO("mode " << int(mode));
+    const std::pair<VolumeRenderMode, bool> cases[] = {{VolumeRenderMode::DVR, false},
+                                                       {VolumeRenderMode::MIP, false},
+                                                       {VolumeRenderMode::MINIP, false},
+                                                       {VolumeRenderMode::MIP, true},
+                                                       {VolumeRenderMode::MINIP, true}};
+    for (const auto& [mode, peaks] : cases) {
+        INFO("mode " << int(mode) << std::string(peaks ? ", peaks" : ""));
         v.mode = mode;
         SlicingSettings settings = planesAndSamples(12, 6);
-        settings.mipPeaks = false;
+        settings.mipPeaks = peaks;
         v.boxClip.reset();
         Renderer leanRenderer, generalRenderer;
         const Comparison lean = compareGrid(leanRenderer, v, settings, *camera, 48);

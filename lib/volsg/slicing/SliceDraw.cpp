@@ -263,7 +263,7 @@ void drawSlices(FrameContext& frame, SliceShared& shared, VolumeTextures& v,
     const SliceMethod& m = plan.method;
     uploadVertices(v);
     const Program& program =
-        shared.sliceProgram(m.mode, m.tagged, m.lighting, m.preIntegrated, m.lean);
+        shared.sliceProgram(m.mode, m.tagged, m.lighting, m.preIntegrated, m.lean, m.leanPeaks);
     program.use();
     setFrameUniforms(program, v, *volume.data, frame.view, settings, plan);
     const RegionLook regions = setBoxClipUniforms(program, volume);

@@ -22,6 +22,7 @@ struct SliceMethod {
     bool hasPlaneOpacity = false; ///< DVR with a planeOpacity that is not 1 everywhere
     int slabSamples = 1;          ///< samples along a ray in each plane's slab
     bool lean = false;            ///< the lean program: every sample of a slab counts alike
+    bool leanPeaks = false;       ///< its MIP/MINIP variant with the voxel-centre crossings
 };
 
 /// The view in the volume's local coordinates (the volume box is [-halfExtent, halfExtent]).

@@ -384,12 +384,14 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
     vec3 tc = texCoord(first);
     vec3 tcStep = dir * (partLength * uInvSpacing / uTexSize);
     int j0 = 0, j1 = parts - 1;
+#ifndef PEAKS
     if (uSkipCells) {
         vec3 du = dir * (partLength * uInvSpacing);
         j0 = emittingEnd(voxelCoord(first), du, parts, false);
         if (j0 >= parts) discard; // nothing in this slab can emit
         j1 = emittingEnd(voxelCoord(first), du, parts, true);
     }
+#endif
 #if MODE == 0
     float lengthL0 = partLength * uInvL0;
     vec3 emitted = vec3(0.0);
@@ -421,6 +423,42 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
     // v is a monotone function of the texel (rising, or falling for a reversed dataRange;
     // float rounding keeps the order), so the extreme texel gives the extreme v.
     float orient = ((MODE == 1) == (range.y >= range.x)) ? 1.0 : -1.0;
+#ifdef PEAKS
+    // The general loop's samples with peaks (see main), as texels: the texture coordinate is
+    // linear along the ray, so each axis's crossings are a row of evenly spaced fetches.
+    float top = -1e30;
+    vec3 tcOrigin = texCoord(origin);
+    vec3 tcPerT = dir * (uInvSpacing / uTexSize);
+    vec3 ends[2] = vec3[2](origin - dir * front, origin + dir * (thickness - front));
+    for (int e = 0; e < 2; ++e)
+        if (onVolumeFace(ends[e])) top = max(top, orient * texture(uData, texCoord(ends[e])).r);
+    vec3 u0 = voxelCoord(origin);
+    vec3 du = dir * uInvSpacing;
+    if (parts == 1 && !uFacePass) {
+        vec3 tCentre = (floor(u0) + 0.5 - u0) / mix(du, vec3(1e-30), equal(du, vec3(0.0)));
+        vec4 ts = vec4(0.0, tCentre);
+        for (int i = 0; i < 4; ++i)
+            if (ts[i] >= -front && ts[i] <= thickness - front)
+                top = max(top, orient * texture(uData, tcOrigin + tcPerT * ts[i]).r);
+    } else {
+        for (int j = 0; j < parts; ++j)
+            top = max(top, orient * texture(uData, tc + float(j) * tcStep).r);
+        for (int axis = 0; axis < 3; ++axis) {
+            float d = du[axis];
+            if (d == 0.0) continue;
+            float ua = u0[axis] - d * front;
+            float ub = u0[axis] + d * (thickness - front);
+            float firstCrossing = ceil(min(ua, ub) - 0.5) + 0.5;
+            int count = min(int(floor(max(ua, ub) - firstCrossing)) + 1, 16384);
+            vec3 c = tcOrigin + tcPerT * ((firstCrossing - u0[axis]) / d);
+            vec3 cStep = tcPerT / d;
+            for (int k = 0; k < count; ++k)
+                top = max(top, orient * texture(uData, c + float(k) * cStep).r);
+        }
+    }
+    if (top < -1e29) discard;
+    float best = normalised(orient * top * uDataScale + uDataOffset, range);
+#else
     PeakTracker k = noPeak();
     for (int j = max(j0 - 1, -1); j <= min(j1 + 1, parts); ++j) {
         float t = -front + (float(j) + 0.5) * partLength;
@@ -429,6 +467,7 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
     }
     float texel = orient * (parts > 1 ? refinedTop(k) : k.top);
     float best = normalised(texel * uDataScale + uDataOffset, range);
+#endif
     fragColor = vec4(uintBitsToFloat(floatBitsToUint(best + 1.0) & ~uInfoMask), 0.0, 0.0, 0.0);
 #endif
 }

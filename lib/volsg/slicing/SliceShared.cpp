@@ -16,9 +16,11 @@ namespace volsg::slicing {
 
 namespace {
 
-std::string prelude(int mode, bool tagged, bool lighting, bool preIntegrated, bool lean = false) {
+std::string prelude(int mode, bool tagged, bool lighting, bool preIntegrated, bool lean = false,
+                    bool peaks = false) {
     std::string s = "#version 330 core\n#define MODE " + std::to_string(mode) + "\n";
     if (lean) s += "#define LEAN\n";
+    if (peaks) s += "#define PEAKS\n";
     if (tagged) s += "#define TAGGED\n";
     if (lighting) s += "#define LIGHTING\n";
     if (preIntegrated) s += "#define PREINTEGRATED\n";
@@ -60,12 +62,12 @@ Mode modeOf(VolumeRenderMode m) {
 }
 
 const Program& SliceShared::sliceProgram(int mode, bool tagged, bool lighting, bool preIntegrated,
-                                         bool lean) {
-    const int key =
-        mode | (tagged ? 4 : 0) | (lighting ? 8 : 0) | (preIntegrated ? 16 : 0) | (lean ? 32 : 0);
+                                         bool lean, bool peaks) {
+    const int key = mode | (tagged ? 4 : 0) | (lighting ? 8 : 0) | (preIntegrated ? 16 : 0) |
+                    (lean ? 32 : 0) | (peaks ? 64 : 0);
     auto it = slicePrograms.find(key);
     if (it != slicePrograms.end()) return it->second;
-    const std::string head = prelude(mode, tagged, lighting, preIntegrated, lean);
+    const std::string head = prelude(mode, tagged, lighting, preIntegrated, lean, peaks);
     const Shader vertex(GL_VERTEX_SHADER, head + shaders::sliceVertex, "volume slice");
     const Shader fragment(GL_FRAGMENT_SHADER, head + shaders::sliceCommon + shaders::sliceFragment,
                           "volume slice");

@@ -63,9 +63,10 @@ struct SliceShared {
     int max3DTextureSize = 0;       ///< what bricks use (RenderDebug may lower it)
 
     /// `lean`: the variant with only the slab loop of samples that all count alike (see
-    /// LEAN in SliceShaders.h); the caller decides when that holds.
-    const Program& sliceProgram(int mode, bool tagged, bool lighting, bool preIntegrated,
-                                bool lean);
+    /// LEAN in SliceShaders.h), `peaks` its MIP/MINIP loop with the voxel-centre crossings;
+    /// the caller decides when that holds.
+    const Program& sliceProgram(int mode, bool tagged, bool lighting, bool preIntegrated, bool lean,
+                                bool peaks);
     const Program& compositeProgram(int mode);
 
     /// Copies the opaque pass's depth into a texture the slices may read: sampling the depth

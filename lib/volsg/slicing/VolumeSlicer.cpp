@@ -76,11 +76,12 @@ SliceMethod prepareVolume(VolumeTextures& v, const SliceShared& shared, TextureS
     prepareFilter(v, settings.nearest);
     m.slabSamples = m.mode != kAverage ? std::clamp(settings.samplesPerPlane, 1, 256) : 1;
     // The lean program when every sample of a slab counts alike (several of them, no tags, no
-    // BoxClip; DVR without planeOpacity, lighting or pre-integration; MIP/MINIP without the
-    // voxel-centre crossings).
+    // BoxClip; DVR without planeOpacity, lighting or pre-integration; MIP/MINIP with or
+    // without the voxel-centre crossings, a variant each).
     m.lean = m.slabSamples > 1 && !m.tagged && !volume.boxClip &&
              (m.mode == kDvr ? !m.lighting && !m.preIntegrated && !m.hasPlaneOpacity
-                             : (m.mode == kMip || m.mode == kMinip) && !settings.mipPeaks);
+                             : m.mode == kMip || m.mode == kMinip);
+    m.leanPeaks = m.lean && m.mode != kDvr && settings.mipPeaks;
     return m;
 }
 
