@@ -368,6 +368,40 @@ float refinedTop(PeakTracker k) {
 }
 #endif
 
+#if defined(LEAN) && defined(PEAKS)
+// Where the ray u0 + s along (voxel coordinates) first enters, from s0 on, a cell that may
+// emit; past s1 when none does by then. The cells are walked face by face (not sampled), so
+// no cell the ray crosses is stepped over; a hundredth of a voxel's margin covers rounding.
+float firstEmitting(vec3 u0, vec3 along, float s0, float s1) {
+    ivec3 lastCell = textureSize(uCells, 0) - 1;
+    float cellSize = 1.0 / uCellScale;
+    bvec3 still = equal(along, vec3(0.0));
+    vec3 safe = mix(along, vec3(1.0), still);
+    ivec3 cell = ivec3(floor((u0 + along * s0) * uCellScale));
+    vec3 sNext = mix(((vec3(cell) + step(0.0, along)) * cellSize - u0) / safe, vec3(1e30), still);
+    vec3 sDelta = mix(cellSize / abs(safe), vec3(0.0), still);
+    ivec3 stepSign = ivec3(sign(along));
+    float s = s0;
+    for (int guard = 0; guard < 1024; ++guard) {
+        if (texelFetch(uCells, clamp(cell, ivec3(0), lastCell), 0).r != 0u)
+            return max(s0, s - 0.01 / length(along));
+        s = min(min(sNext.x, sNext.y), sNext.z);
+        if (s > s1) return s;
+        if (sNext.x == s) {
+            cell.x += stepSign.x;
+            sNext.x += sDelta.x;
+        } else if (sNext.y == s) {
+            cell.y += stepSign.y;
+            sNext.y += sDelta.y;
+        } else {
+            cell.z += stepSign.z;
+            sNext.z += sDelta.z;
+        }
+    }
+    return s0; // (a guard only: the whole stretch)
+}
+#endif
+
 #ifdef LEAN
 // The slab's samples when every one counts alike: untagged, no BoxClip, and for DVR no
 // planeOpacity, lighting or pre-integration; several samples per plane (and the face pass).
@@ -426,22 +460,33 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
 #ifdef PEAKS
     // The general loop's samples with peaks (see main), as texels: the texture coordinate is
     // linear along the ray, so each axis's crossings are a row of evenly spaced fetches.
+    // Samples in cells that cannot emit are left out, as in the lean loop without peaks: the
+    // slab's stretch from the first to the last cell it crosses that may.
     float top = -1e30;
     vec3 tcOrigin = texCoord(origin);
     vec3 tcPerT = dir * (uInvSpacing / uTexSize);
-    vec3 ends[2] = vec3[2](origin - dir * front, origin + dir * (thickness - front));
-    for (int e = 0; e < 2; ++e)
-        if (onVolumeFace(ends[e])) top = max(top, orient * texture(uData, texCoord(ends[e])).r);
     vec3 u0 = voxelCoord(origin);
     vec3 du = dir * uInvSpacing;
+    vec2 kept = vec2(-front, thickness - front);
+    if (uSkipCells) {
+        kept = vec2(firstEmitting(u0, du, kept.x, kept.y), -firstEmitting(u0, -du, -kept.y, -kept.x));
+        if (kept.x > kept.y) discard;
+    }
+    vec3 ends[2] = vec3[2](origin - dir * front, origin + dir * (thickness - front));
+    for (int e = 0; e < 2; ++e)
+        if (onVolumeFace(ends[e]) && (e == 0 ? -front >= kept.x : thickness - front <= kept.y))
+            top = max(top, orient * texture(uData, texCoord(ends[e])).r);
     if (parts == 1 && !uFacePass) {
         vec3 tCentre = (floor(u0) + 0.5 - u0) / mix(du, vec3(1e-30), equal(du, vec3(0.0)));
         vec4 ts = vec4(0.0, tCentre);
         for (int i = 0; i < 4; ++i)
-            if (ts[i] >= -front && ts[i] <= thickness - front)
+            if (ts[i] >= max(-front, kept.x) && ts[i] <= min(thickness - front, kept.y))
                 top = max(top, orient * texture(uData, tcOrigin + tcPerT * ts[i]).r);
     } else {
-        for (int j = 0; j < parts; ++j)
+        // Part j's middle is at -front + (j + 0.5) partLength.
+        int jA = max(int(ceil((kept.x + front) / partLength - 0.5)), 0);
+        int jB = min(int(floor((kept.y + front) / partLength - 0.5)), parts - 1);
+        for (int j = jA; j <= jB; ++j)
             top = max(top, orient * texture(uData, tc + float(j) * tcStep).r);
         for (int axis = 0; axis < 3; ++axis) {
             float d = du[axis];
@@ -450,9 +495,14 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
             float ub = u0[axis] + d * (thickness - front);
             float firstCrossing = ceil(min(ua, ub) - 0.5) + 0.5;
             int count = min(int(floor(max(ua, ub) - firstCrossing)) + 1, 16384);
+            // Crossing k is at t = (firstCrossing + k - u0) / d; those in the kept stretch.
+            float ka = u0[axis] + d * kept.x - firstCrossing;
+            float kb = u0[axis] + d * kept.y - firstCrossing;
+            int kA = max(int(ceil(min(ka, kb))), 0);
+            int kB = min(int(floor(max(ka, kb))), count - 1);
             vec3 c = tcOrigin + tcPerT * ((firstCrossing - u0[axis]) / d);
             vec3 cStep = tcPerT / d;
-            for (int k = 0; k < count; ++k)
+            for (int k = kA; k <= kB; ++k)
                 top = max(top, orient * texture(uData, c + float(k) * cStep).r);
         }
     }
