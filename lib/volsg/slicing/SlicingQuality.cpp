@@ -125,7 +125,8 @@ double quadratureCost(const SlabQuadrature& q, double depthL0, VolumeRenderMode 
     // samples (rasterisation, slab set-up, the float blend); a pre-integrated sample 3.2 (two
     // data fetches and a 2D table, the general loop); a general-loop sample 1.5; a tagged
     // sample 4.5. MIP/MINIP: a lean sample is a fetch and a compare, so the rest weighs more:
-    // a plane 22, a general-loop sample 6, a voxel-centre crossing 3.
+    // a plane 22, a general-loop sample 6, a voxel-centre crossing 3 (in the lean loop 1, as
+    // a sample: they are a row of evenly spaced fetches per axis).
     const double planes = std::max(1.0, std::ceil(depthL0 / q.planeSpacingL0 - 1e-9));
     const int k = std::max(q.samplesPerPlane, 1);
     if (mode == VolumeRenderMode::DVR) {
@@ -135,9 +136,10 @@ double quadratureCost(const SlabQuadrature& q, double depthL0, VolumeRenderMode 
         const double perSample = tagged ? 4.5 : q.preIntegrated ? 3.2 : lean ? 1.0 : 1.5;
         return planes * (8.7 + k * perSample);
     }
-    const bool lean = k > 1 && !tagged && !q.peaks;
+    const bool lean = k > 1 && !tagged;
     double perPlane = 22.0 + k * (lean ? 1.0 : 6.0);
-    if (q.peaks) perPlane += 3.0 * (k == 1 ? 3.0 : 1.7 * q.planeSpacingL0); // the crossings
+    if (q.peaks) // the crossings
+        perPlane += k == 1 ? 3.0 * 3.0 : (lean ? 1.0 : 3.0) * 1.7 * q.planeSpacingL0;
     return planes * perPlane;
 }
 
