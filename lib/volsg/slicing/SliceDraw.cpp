@@ -153,6 +153,7 @@ void bindTables(FrameContext& frame, SliceShared& shared, const VolumeTextures& 
         shared.opaqueDepth.bind(kOpaqueDepthUnit);
     }
     v.tableTexture.bind(kTableUnit);
+    if (method.lean) v.tableRowTexture.bind(kTableRowUnit);
     if (method.tagged) v.tagRowTexture.bind(kTagRowUnit);
     if (method.preIntegrated) {
         v.preIntegrationTexture.bind(kPreIntegratedUnit);

@@ -24,6 +24,7 @@ inline constexpr const char* sliceCommon = R"GLSL(
 // Per row: ENTRIES samples of (r, g, b, tau L0) over v, a copy of the last one (so that the
 // linear filter never reaches further), then (lo, hi) of the row's dataRange.
 uniform sampler2D uTable;
+uniform sampler1D uTableRow; // its row 0 alone (the lean DVR loop: two texels per lookup, not four)
 
 vec2 rangeOf(int row) { return texelFetch(uTable, ivec2(ENTRIES + 1, row), 0).rg; }
 
@@ -435,7 +436,6 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
     // loop's normalised() and classify(), with their per-sample constants taken out).
     vec2 size = vec2(textureSize(uTable, 0));
     float tableScale = float(ENTRIES - 1) / size.x, tableOffset = 0.5 / size.x;
-    float rowY = 0.5 / size.y;
     bool stepRange = range.x == range.y;
     float vScale = stepRange ? 0.0 : uDataScale / (range.y - range.x);
     float vOffset = stepRange ? 0.0 : (uDataOffset - range.x) / (range.y - range.x);
@@ -443,7 +443,7 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
         float texel = texture(uData, tc + float(j) * tcStep).r;
         float v = stepRange ? (texel * uDataScale + uDataOffset >= range.x ? 1.0 : 0.0)
                             : clamp(texel * vScale + vOffset, 0.0, 1.0);
-        vec4 rgba = texture(uTable, vec2(v * tableScale + tableOffset, rowY));
+        vec4 rgba = texture(uTableRow, v * tableScale + tableOffset);
         float D = rgba.a * lengthL0;
         float e = exp(-D);
         emitted += transmitted * (D < 0.01 ? opacityOf(D) : 1.0 - e) * rgba.rgb;

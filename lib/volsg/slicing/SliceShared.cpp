@@ -43,6 +43,7 @@ void setSamplers(const Program& p) {
     p.set("uProjected", int(kProjectedUnit));
     p.set("uOpaqueDepth", int(kOpaqueDepthUnit));
     p.set("uCells", int(kCellsUnit));
+    p.set("uTableRow", int(kTableRowUnit));
 }
 
 } // namespace

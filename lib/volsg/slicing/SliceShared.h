@@ -33,6 +33,7 @@ enum TextureUnit : GLuint {
     kProjectedUnit = 6,
     kOpaqueDepthUnit = 7,
     kCellsUnit = 8,
+    kTableRowUnit = 9,
     /// Active while textures are created or uploaded (Texture binds them to the active unit),
     /// so that no upload replaces a texture bound for drawing.
     kUploadUnit = 15

@@ -101,6 +101,9 @@ void prepareTable(VolumeTextures& v, const RayCastVolume& volume, std::uint64_t 
     if (!v.tableTexture) v.tableTexture = Texture(GL_TEXTURE_2D); // linear, clamped
     v.tableTexture.image2D(GL_RGBA32F, TransferTable::kWidth, v.table.rows(), GL_RGBA, GL_FLOAT,
                            v.table.texels().data());
+    if (!v.tableRowTexture) v.tableRowTexture = Texture(GL_TEXTURE_1D); // linear, clamped
+    v.tableRowTexture.image1D(GL_RGBA32F, TransferTable::kWidth, GL_RGBA, GL_FLOAT,
+                              v.table.texels().data());
     if (v.table.rows() > 1) {
         if (!v.tagRowTexture) {
             v.tagRowTexture = Texture(GL_TEXTURE_2D);

@@ -79,6 +79,7 @@ struct VolumeTextures {
     std::uint64_t tableKey = 0;
     TransferTable table;
     Texture tableTexture, tagRowTexture;
+    Texture tableRowTexture; ///< row 0 of tableTexture as a 1D texture (the lean DVR loop)
 
     EmptyCells cells;    ///< measured on first use
     Texture cellTexture; ///< EmptyCells::flags as R8UI, one texel per cell
