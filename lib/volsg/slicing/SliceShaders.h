@@ -411,7 +411,8 @@ float firstEmitting(vec3 u0, vec3 along, float s0, float s1) {
 // branch of a SIMD block with its lanes masked, so general code left in the shader costs
 // even where a uniform switches it off. Leading and trailing samples in cells that cannot emit
 // are left out (emittingEnd); MIP keeps one such neighbour each side for the peak refinement,
-// so the image is the general loop's.
+// so the image is the general loop's. MIP/MINIP with peaks (PEAKS) take the general loop's
+// samples too, each axis's voxel-centre crossings as one row of evenly spaced fetches.
 void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, vec2 reach) {
     vec2 range = rangeOf(0);
     float partLength = thickness / float(parts);
