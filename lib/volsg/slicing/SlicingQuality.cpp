@@ -35,6 +35,10 @@ constexpr int kHighestStep = 10; // 32
 constexpr double kFloorCheckEvaluations = 3.0;
 /// Below the floor, the cheapest candidate within this factor of it is drawn.
 constexpr double kFloorSlack = 1.2;
+/// The floor is sought along the walk of this many samples a plane (or the most below it):
+/// denser slabs' parts are no finer at the top rates, and their floor came out higher (the
+/// 24^3 thin shell: 0.21/255 along the 256-sample walk, 0.17 along the 64-sample one).
+constexpr int kFloorSamples = 64;
 
 /// Spacing rounded to 3 significant digits, so views that differ a little share a cache key.
 double roundedSpacing(double s) {
@@ -266,7 +270,7 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
             if (floor <= enough) break;
             const Walk* densest = nullptr;
             for (const Walk& w : walks)
-                if ((extreme ? w.peaks : w.pre) == kind &&
+                if ((extreme ? w.peaks : w.pre) == kind && w.samples <= kFloorSamples &&
                     (!densest || w.samples > densest->samples))
                     densest = &w;
             if (!densest) continue;
