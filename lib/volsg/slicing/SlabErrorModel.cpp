@@ -332,7 +332,14 @@ struct SlabErrorModel::Impl {
     glm::dvec3 slicedDvr(const ModelRay& ray, const glm::dvec3& dir, const PlaneLayout& layout,
                          const SlabQuadrature& q);
     glm::dvec3 slicedExtreme(const ModelRay& ray, const glm::dvec3& dir, const PlaneLayout& layout,
-                             const SlabQuadrature& q);
+                             const SlabQuadrature& q) {
+        return grid.withData(
+            [&](const auto& at) { return slicedExtremeOf(ray, dir, layout, q, at); });
+    }
+    template <class DataAt>
+    glm::dvec3 slicedExtremeOf(const ModelRay& ray, const glm::dvec3& dir,
+                               const PlaneLayout& layout, const SlabQuadrature& q,
+                               const DataAt& dataAt);
     glm::dvec3 preClassified(const ModelRay& ray, const glm::dvec3& dir, int sliceStep);
     void partColour(const glm::dvec3& origin, const glm::dvec3& dir, double a, double b, double at,
                     bool preIntegrated, glm::dvec3& C, double& D);
@@ -572,8 +579,10 @@ glm::dvec3 SlabErrorModel::Impl::slicedDvr(const ModelRay& ray, const glm::dvec3
     return c.emitted;
 }
 
-glm::dvec3 SlabErrorModel::Impl::slicedExtreme(const ModelRay& ray, const glm::dvec3& dir,
-                                               const PlaneLayout& layout, const SlabQuadrature& q) {
+template <class DataAt>
+glm::dvec3 SlabErrorModel::Impl::slicedExtremeOf(const ModelRay& ray, const glm::dvec3& dir,
+                                                 const PlaneLayout& layout,
+                                                 const SlabQuadrature& q, const DataAt& dataAt) {
     const bool maximum = mode == VolumeRenderMode::MIP;
     const double sign = maximum ? 1.0 : -1.0;
     // The samples in ray order with their slab, the score (v, or -v for MINIP) and row.
@@ -590,7 +599,7 @@ glm::dvec3 SlabErrorModel::Impl::slicedExtreme(const ModelRay& ray, const glm::d
         auto take = [&](double t) {
             const glm::dvec3 p = ray.origin + t * dir;
             const int row = rowAt(p);
-            samples.push_back({sign * vAt(p, row), row, slabIndex, true});
+            samples.push_back({sign * vOf(dataAt(p), row), row, slabIndex, true});
         };
         const double part = (s.b - s.a) / s.parts;
         if (s.parts == 1 && !s.face)
