@@ -152,11 +152,24 @@ void forEachCrossing(const glm::dvec3& u0, const glm::dvec3& voxelsPerT, double 
 
 /// One ray through the box near a direction d: x(t) = origin + t dir (|dir| = 1), with
 /// dot(origin, d) = 0, so the view depth along d is t * depthPerT.
+/// A ray's extreme sample (MIP/MINIP): the score v (MIP) or -v (MINIP), larger being more
+/// extreme, and the sample's row.
+struct Extreme {
+    double score = -std::numeric_limits<double>::infinity();
+    int row = 0;
+    /// This, or `later` where it is more extreme (a tie keeps the earlier sample's row).
+    Extreme over(const Extreme& later) const { return later.score > score ? later : *this; }
+};
+
 struct ModelRay {
     glm::dvec3 origin{0.0};
     glm::dvec3 dir{0.0};
     double depthPerT = 1.0;
     double t0 = 0.0, t1 = 0.0;
+    /// MIP/MINIP: the extreme of the ray's ends and voxel-centre crossings, which every slab
+    /// layout with peaks and several samples a plane takes (found with the truth).
+    Extreme crossing;
+    bool hasCrossing = false;
     /// The layout's planes along this ray (depths become ray lengths).
     PlaneLayout along(const PlaneLayout& depthLayout) const {
         PlaneLayout l = depthLayout;
@@ -322,6 +335,18 @@ struct SlabErrorModel::Impl {
     glm::dvec3 truthDvrOf(const ModelRay& ray, const DataAt& dataAt, double step);
     template <class DataAt>
     glm::dvec3 truthExtremeOf(const ModelRay& ray, const glm::dvec3& dir, const DataAt& dataAt);
+    /// The extreme of samples every L0 / 4 from end to end (the truth's besides the crossings).
+    template <class DataAt>
+    Extreme evenExtremeOf(const ModelRay& ray, const glm::dvec3& dir, const DataAt& dataAt) const;
+    /// The extreme of the ray's ends and every voxel-centre crossing (ModelRay::crossing).
+    template <class DataAt>
+    Extreme crossingExtremeOf(const ModelRay& ray, const glm::dvec3& dir,
+                              const DataAt& dataAt) const;
+    /// The extreme of the samples at the t that along(take) visits.
+    template <class DataAt, class Along>
+    Extreme extremeOf(const ModelRay& ray, const glm::dvec3& dir, const DataAt& dataAt,
+                      const Along& along) const;
+    glm::dvec3 colourOf(const Extreme& e) const;
     /// A sampler of `other`, a grid over the same box as `grid` at its own resolution.
     GridSampler samplerOf(const VolumeGrid& other) const {
         GridSampler g = grid;
@@ -419,8 +444,16 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
     s->truth.resize(s->rays.size());
     if (mode == VolumeRenderMode::DVR) preparePreTables();
     forEachIndex(s->rays.size(), [&](std::size_t i) {
-        const ModelRay& ray = s->rays[i];
-        s->truth[i] = mode == VolumeRenderMode::DVR ? truthDvr(ray) : truthExtreme(ray, ray.dir);
+        ModelRay& ray = s->rays[i];
+        if (mode == VolumeRenderMode::DVR) {
+            s->truth[i] = truthDvr(ray);
+            return;
+        }
+        s->truth[i] = grid.withData([&](const auto& at) {
+            ray.crossing = crossingExtremeOf(ray, ray.dir, at);
+            ray.hasCrossing = true;
+            return colourOf(evenExtremeOf(ray, ray.dir, at).over(ray.crossing));
+        });
     });
     sets[dirIndex] = std::move(s);
     return *sets[dirIndex];
@@ -460,24 +493,42 @@ glm::dvec3 SlabErrorModel::Impl::truthExtreme(const ModelRay& ray, const glm::dv
 template <class DataAt>
 glm::dvec3 SlabErrorModel::Impl::truthExtremeOf(const ModelRay& ray, const glm::dvec3& dir,
                                                 const DataAt& dataAt) {
+    return colourOf(evenExtremeOf(ray, dir, dataAt).over(crossingExtremeOf(ray, dir, dataAt)));
+}
+
+template <class DataAt>
+Extreme SlabErrorModel::Impl::evenExtremeOf(const ModelRay& ray, const glm::dvec3& dir,
+                                            const DataAt& dataAt) const {
+    // Between crossings the field is a smooth cubic, whose top a quarter-voxel step misses by
+    // little (L0 / 8 cost twice as much for the same choices on the sweep's MIP case and the
+    // chest CT's target).
     const double len = ray.t1 - ray.t0;
-    // Samples every L0 / 4, and every voxel-centre crossing below: between crossings the field
-    // is a smooth cubic, whose top a quarter-voxel step misses by little (L0 / 8 cost twice as
-    // much for the same choices on the sweep's MIP case and the chest CT's target).
     const int n = std::clamp(int(std::ceil(len / (0.25 * L0))), 1, 2 * kMaxFineSteps);
-    const bool maximum = mode == VolumeRenderMode::MIP;
-    double best = maximum ? -1.0 : 2.0;
-    int bestRow = 0;
-    const auto along = [&](auto&& take) {
+    return extremeOf(ray, dir, dataAt, [&](auto&& take) {
         for (int i = 0; i <= n; ++i)
             take(ray.t0 + len * i / n);
-        // The trilinear field is a cubic between voxel-centre planes and has its kinks on
-        // them, where a tent-shaped extreme lies: every crossing is sampled too, so the extreme
-        // is exact there (evenly spaced samples alone came out below it, and below the
-        // slicer's crossings).
-        forEachCrossing((ray.origin + grid.half) / grid.spacing, dir / grid.spacing, ray.t0,
-                        ray.t1, take);
-    };
+    });
+}
+
+template <class DataAt>
+Extreme SlabErrorModel::Impl::crossingExtremeOf(const ModelRay& ray, const glm::dvec3& dir,
+                                                const DataAt& dataAt) const {
+    // The trilinear field is a cubic between voxel-centre planes and has its kinks on them,
+    // where a tent-shaped extreme lies: every crossing is sampled, so the extreme is exact
+    // there (evenly spaced samples alone came out below it, and below the slicer's crossings).
+    return extremeOf(ray, dir, dataAt, [&](auto&& take) {
+        take(ray.t0);
+        take(ray.t1);
+        forEachCrossing((ray.origin + grid.half) / grid.spacing, dir / grid.spacing, ray.t0, ray.t1,
+                        take);
+    });
+}
+
+template <class DataAt, class Along>
+Extreme SlabErrorModel::Impl::extremeOf(const ModelRay& ray, const glm::dvec3& dir,
+                                        const DataAt& dataAt, const Along& along) const {
+    const bool maximum = mode == VolumeRenderMode::MIP;
+    const double sign = maximum ? 1.0 : -1.0;
     if (!tagged) {
         // One row: v is monotone in the data (rising, or falling for a reversed dataRange), so
         // the extreme data gives the extreme v, normalised once (the same value).
@@ -489,19 +540,20 @@ glm::dvec3 SlabErrorModel::Impl::truthExtremeOf(const ModelRay& ray, const glm::
             const double d = dataAt(ray.origin + t * dir);
             extreme = largest ? std::max(extreme, d) : std::min(extreme, d);
         });
-        best = vOf(extreme, 0);
-    } else {
-        along([&](double t) {
-            const glm::dvec3 p = ray.origin + t * dir;
-            const int row = rowAt(p);
-            const double v = vOf(dataAt(p), row);
-            if (maximum ? v > best : v < best) {
-                best = v;
-                bestRow = row;
-            }
-        });
+        return {sign * vOf(extreme, 0), 0};
     }
-    const glm::dvec4 rgba = table.function(bestRow).evaluate(best);
+    Extreme best;
+    along([&](double t) {
+        const glm::dvec3 p = ray.origin + t * dir;
+        const int row = rowAt(p);
+        best = best.over({sign * vOf(dataAt(p), row), row});
+    });
+    return best;
+}
+
+glm::dvec3 SlabErrorModel::Impl::colourOf(const Extreme& e) const {
+    const double v = std::clamp(mode == VolumeRenderMode::MIP ? e.score : -e.score, 0.0, 1.0);
+    const glm::dvec4 rgba = table.function(e.row).evaluate(v);
     return glm::dvec3(rgba) * std::min(rgba.a, TransferTable::kMaxOpacity);
 }
 
@@ -581,8 +633,8 @@ glm::dvec3 SlabErrorModel::Impl::slicedDvr(const ModelRay& ray, const glm::dvec3
 
 template <class DataAt>
 glm::dvec3 SlabErrorModel::Impl::slicedExtremeOf(const ModelRay& ray, const glm::dvec3& dir,
-                                                 const PlaneLayout& layout,
-                                                 const SlabQuadrature& q, const DataAt& dataAt) {
+                                                 const PlaneLayout& layout, const SlabQuadrature& q,
+                                                 const DataAt& dataAt) {
     const bool maximum = mode == VolumeRenderMode::MIP;
     const double sign = maximum ? 1.0 : -1.0;
     // The samples in ray order with their slab, the score (v, or -v for MINIP) and row.
@@ -595,6 +647,10 @@ glm::dvec3 SlabErrorModel::Impl::slicedExtremeOf(const ModelRay& ray, const glm:
     samples.clear();
     int slabIndex = 0;
     const glm::dvec3 voxelsPerT = dir / grid.spacing;
+    // With peaks and several samples a plane, every slab takes every crossing in it and the
+    // first and last take the ray's ends: together, the samples whose extreme the truth found
+    // (ModelRay::crossing), the same for every layout. Only the middles remain to be taken.
+    const bool everyCrossing = q.peaks && q.samplesPerPlane > 1;
     forEachSlab(ray, layout, std::max(q.samplesPerPlane, 1), [&](const Slab& s) {
         auto take = [&](double t) {
             const glm::dvec3 p = ray.origin + t * dir;
@@ -607,11 +663,10 @@ glm::dvec3 SlabErrorModel::Impl::slicedExtremeOf(const ModelRay& ray, const glm:
         else
             for (int j = 0; j < s.parts; ++j)
                 take(s.a + (j + 0.5) * part);
-        if (q.peaks) {
+        if (q.peaks && !everyCrossing) {
             // The slab's ends on the box's face (a structure the face cuts has its extreme
-            // there), and the voxel-centre crossings: with one part the nearest
-            // plane along each axis to the sample, with more (or a face's sliver) every
-            // crossing in the slab.
+            // there), and the voxel-centre crossings: the nearest plane along each axis to
+            // the one sample, or every crossing in a face's sliver.
             if (s.a == ray.t0) take(s.a);
             if (s.b == ray.t1) take(s.b);
             const glm::dvec3 u0 = (ray.origin + s.plane * dir + grid.half) / grid.spacing;
@@ -630,6 +685,11 @@ glm::dvec3 SlabErrorModel::Impl::slicedExtremeOf(const ModelRay& ray, const glm:
     });
     double best = -1e300;
     int bestRow = 0;
+    if (everyCrossing) {
+        const Extreme c = ray.hasCrossing ? ray.crossing : crossingExtremeOf(ray, dir, dataAt);
+        best = c.score;
+        bestRow = c.row;
+    }
     for (std::size_t i = 0; i < samples.size(); ++i)
         if (samples[i].score > best) {
             best = samples[i].score;

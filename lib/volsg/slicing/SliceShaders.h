@@ -477,18 +477,16 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
     for (int e = 0; e < 2; ++e)
         if (onVolumeFace(ends[e]) && (e == 0 ? -front >= kept.x : thickness - front <= kept.y))
             top = max(top, orient * texture(uData, texCoord(ends[e])).r);
-    if (parts == 1 && !uFacePass) {
-        vec3 tCentre = (floor(u0) + 0.5 - u0) / mix(du, vec3(1e-30), equal(du, vec3(0.0)));
-        vec4 ts = vec4(0.0, tCentre);
-        for (int i = 0; i < 4; ++i)
-            if (ts[i] >= max(-front, kept.x) && ts[i] <= min(thickness - front, kept.y))
-                top = max(top, orient * texture(uData, tcOrigin + tcPerT * ts[i]).r);
+    if (parts == 1 && !uFacePass) { // a short slab: its plane point, and every crossing below
+        if (0.0 >= kept.x && 0.0 <= kept.y) top = max(top, orient * texture(uData, tcOrigin).r);
     } else {
         // Part j's middle is at -front + (j + 0.5) partLength.
         int jA = max(int(ceil((kept.x + front) / partLength - 0.5)), 0);
         int jB = min(int(floor((kept.y + front) / partLength - 0.5)), parts - 1);
         for (int j = jA; j <= jB; ++j)
             top = max(top, orient * texture(uData, tc + float(j) * tcStep).r);
+    }
+    {
         for (int axis = 0; axis < 3; ++axis) {
             float d = du[axis];
             if (d == 0.0) continue;
@@ -753,7 +751,7 @@ void main() {
             float refined = refinedTop(k);
             best = clamp(MODE == 1 ? refined : -refined, 0.0, 1.0);
         }
-    } else if (parts == 1 && !uFacePass) {
+    } else if (uSlabSamples <= 1 && !uFacePass) {
         // Both ends of the slab too: where it ends at the box's face, a structure cut by the
         // face has its extreme there (chest CT: up to 90/255 missed along a silhouette).
         vec3 ends[2] = vec3[2](origin - dir * front, origin + dir * back);
@@ -767,10 +765,15 @@ void main() {
             considerExtreme(origin + dir * t, best, bestInfo);
         }
     } else {
+        // (Several samples a plane: every crossing even where a short slab has one part, so
+        // that every layout takes all of a ray's crossings, as the error model assumes.)
         float partLength = thickness / float(parts);
-        for (int j = 0; j < parts; ++j)
-            considerExtreme(origin + dir * (-front + (float(j) + 0.5) * partLength), best,
-                            bestInfo);
+        if (parts == 1 && !uFacePass)
+            considerExtreme(p, best, bestInfo);
+        else
+            for (int j = 0; j < parts; ++j)
+                considerExtreme(origin + dir * (-front + (float(j) + 0.5) * partLength), best,
+                                bestInfo);
         vec3 ends[2] = vec3[2](origin - dir * front, origin + dir * back); // as with one part
         for (int e = 0; e < 2; ++e)
             if (onVolumeFace(ends[e])) considerExtreme(ends[e], best, bestInfo);
