@@ -111,7 +111,9 @@ TEST_CASE("the lean slab loops give the general loops' image") {
                                                        {VolumeRenderMode::MINIP, false},
                                                        {VolumeRenderMode::MIP, true},
                                                        {VolumeRenderMode::MINIP, true}};
-    for (const auto& [mode, peaks] : cases) {
+    for (const auto& c : cases) {
+        const VolumeRenderMode mode = c.first; // (no structured binding: INFO captures these)
+        const bool peaks = c.second;
         INFO("mode " << int(mode) << std::string(peaks ? ", peaks" : ""));
         v.mode = mode;
         SlicingSettings settings = planesAndSamples(12, 6);
