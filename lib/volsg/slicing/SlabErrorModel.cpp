@@ -150,8 +150,6 @@ void forEachCrossing(const glm::dvec3& u0, const glm::dvec3& voxelsPerT, double 
     }
 }
 
-/// One ray through the box near a direction d: x(t) = origin + t dir (|dir| = 1), with
-/// dot(origin, d) = 0, so the view depth along d is t * depthPerT.
 /// A ray's extreme sample (MIP/MINIP): the score v (MIP) or -v (MINIP), larger being more
 /// extreme, and the sample's row.
 struct Extreme {
@@ -161,6 +159,8 @@ struct Extreme {
     Extreme over(const Extreme& later) const { return later.score > score ? later : *this; }
 };
 
+/// One ray through the box near a direction d: x(t) = origin + t dir (|dir| = 1), with
+/// dot(origin, d) = 0, so the view depth along d is t * depthPerT.
 struct ModelRay {
     glm::dvec3 origin{0.0};
     glm::dvec3 dir{0.0};

@@ -316,6 +316,15 @@ bool onVolumeFace(vec3 x) {
     return any(greaterThan(abs(x), uHalfExtent * (1.0 - 1e-4)));
 }
 
+// The voxel-centre planes u = i + 1/2 from u = ua to ub along one axis: the first, and in
+// `count` how many. (The bound only guards loops: a slab lies in one brick, at most a
+// texture's side, 16384 texels, across; a lower bound dropped crossings of thick slabs.)
+float firstCrossing(float ua, float ub, out int count) {
+    float first = ceil(min(ua, ub) - 0.5) + 0.5;
+    count = clamp(int(floor(max(ua, ub) - first)) + 1, 0, 16384);
+    return first;
+}
+
 // Keeps the extreme v of the samples it is given, with the row and BoxClip region of that
 // sample; samples in a removed BoxClip region do not count.
 void considerExtreme(vec3 x, inout float best, inout int bestInfo) {
@@ -486,24 +495,20 @@ void leanSlab(vec3 origin, vec3 dir, float front, float thickness, int parts, ve
         for (int j = jA; j <= jB; ++j)
             top = max(top, orient * texture(uData, tc + float(j) * tcStep).r);
     }
-    {
-        for (int axis = 0; axis < 3; ++axis) {
-            float d = du[axis];
-            if (d == 0.0) continue;
-            float ua = u0[axis] - d * front;
-            float ub = u0[axis] + d * (thickness - front);
-            float firstCrossing = ceil(min(ua, ub) - 0.5) + 0.5;
-            int count = min(int(floor(max(ua, ub) - firstCrossing)) + 1, 16384);
-            // Crossing k is at t = (firstCrossing + k - u0) / d; those in the kept stretch.
-            float ka = u0[axis] + d * kept.x - firstCrossing;
-            float kb = u0[axis] + d * kept.y - firstCrossing;
-            int kA = max(int(ceil(min(ka, kb))), 0);
-            int kB = min(int(floor(max(ka, kb))), count - 1);
-            vec3 c = tcOrigin + tcPerT * ((firstCrossing - u0[axis]) / d);
-            vec3 cStep = tcPerT / d;
-            for (int k = kA; k <= kB; ++k)
-                top = max(top, orient * texture(uData, c + float(k) * cStep).r);
-        }
+    for (int axis = 0; axis < 3; ++axis) {
+        float d = du[axis];
+        if (d == 0.0) continue;
+        int count;
+        float first = firstCrossing(u0[axis] - d * front, u0[axis] + d * (thickness - front), count);
+        // Crossing k is at t = (first + k - u0) / d; those in the kept stretch.
+        float ka = u0[axis] + d * kept.x - first;
+        float kb = u0[axis] + d * kept.y - first;
+        int kA = max(int(ceil(min(ka, kb))), 0);
+        int kB = min(int(floor(max(ka, kb))), count - 1);
+        vec3 c = tcOrigin + tcPerT * ((first - u0[axis]) / d);
+        vec3 cStep = tcPerT / d;
+        for (int k = kA; k <= kB; ++k)
+            top = max(top, orient * texture(uData, c + float(k) * cStep).r);
     }
     if (top < -1e29) discard;
     float best = normalised(orient * top * uDataScale + uDataOffset, range);
@@ -780,13 +785,9 @@ void main() {
         for (int axis = 0; axis < 3; ++axis) {
             float d = du[axis];
             if (d == 0.0) continue;
-            float ua = u0[axis] - d * front;
-            float ub = u0[axis] + d * back;
-            float first = ceil(min(ua, ub) - 0.5) + 0.5;
-            float last = max(ua, ub);
-            // (The bound only guards the loop: a slab lies in one brick, at most a texture's
-            // side, 16384 texels, across; a lower bound dropped crossings of thick slabs.)
-            for (int k = 0; k < 16384 && first + float(k) <= last; ++k)
+            int count;
+            float first = firstCrossing(u0[axis] - d * front, u0[axis] + d * back, count);
+            for (int k = 0; k < count; ++k)
                 considerExtreme(origin + dir * ((first + float(k) - u0[axis]) / d), best,
                                 bestInfo);
         }
