@@ -280,7 +280,7 @@ TEST_CASE("the error model's choice is the cheapest that meets the target") {
     CHECK(c.meetsTarget);
     CHECK(c.predictedRmse <= request.errorTarget);
     // No other quadrature of the search grid that the model predicts within the target (with
-    // the chooser's margin, 0.7) is cheaper.
+    // the chooser's margin) is cheaper.
     const double cost = quadratureCost(c.quadrature, view.depthL0, VolumeRenderMode::DVR, false);
     for (const bool pre : {false, true})
         for (int k = 1; k <= 64; k *= 2)
@@ -290,7 +290,8 @@ TEST_CASE("the error model's choice is the cheapest that meets the target") {
                 q.planeSpacingL0 = k / std::pow(2.0, 0.5 * j);
                 q.preIntegrated = pre;
                 if (view.depthL0 / q.planeSpacingL0 < 1.0) continue; // fewer than one plane
-                if (predictImageRmse(model, view, q) > 0.7 * request.errorTarget) continue;
+                if (predictImageRmse(model, view, q) > kQualityTargetMargin * request.errorTarget)
+                    continue;
                 CHECK(quadratureCost(q, view.depthL0, VolumeRenderMode::DVR, false) >=
                       0.999 * cost);
             }
@@ -298,6 +299,32 @@ TEST_CASE("the error model's choice is the cheapest that meets the target") {
     SlabQuadrature denser = c.quadrature;
     denser.planeSpacingL0 /= 4.0;
     CHECK(predictImageRmse(model, view, denser) < c.predictedRmse);
+}
+
+TEST_CASE("the model lays as many planes as the slicer draws over the view's depth") {
+    // The model's direction sees the box deeper than the view (its nearest lattice direction
+    // is off the view's): a spacing of the view's depth is one plane for the slicer, and must
+    // be one for the model too, not two.
+    const RayCastVolume ml = marschnerLobbVolume();
+    SlabErrorModel model(ml);
+    QualityView view;
+    view.localDirection = glm::normalize(glm::dvec3(0.3, 0.5, -1.0));
+    const int dir = SlabErrorModel::nearestDirection(view.localDirection);
+    view.depthL0 = 0.9 * model.depthL0(dir);
+    view.coverage = 1.0;
+    SlabQuadrature q;
+    q.samplesPerPlane = 16;
+    q.planeSpacingL0 = view.depthL0;
+    SlabQuadrature onePlane = q, twoPlanes = q;
+    onePlane.planeSpacingL0 = 2.0 * model.depthL0(dir);
+    twoPlanes.planeSpacingL0 = 0.51 * model.depthL0(dir);
+    const double predicted = predictImageRmse(model, view, q);
+    CHECK(predicted == doctest::Approx(model.rayRmse(dir, onePlane)).epsilon(1e-12));
+    CHECK(model.rayRmse(dir, twoPlanes) != doctest::Approx(predicted).epsilon(1e-3));
+    // Two planes over the view's depth are two for the model.
+    q.planeSpacingL0 = 0.5 * view.depthL0;
+    CHECK(predictImageRmse(model, view, q) ==
+          doctest::Approx(model.rayRmse(dir, twoPlanes)).epsilon(1e-12));
 }
 
 TEST_CASE("the error model predicts the same on one thread and on several") {
