@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <limits>
 #include <numeric>
-#include <cstdlib>
 
 #include "ImageError.h"
 #include "PrintfFormat.h"
@@ -87,7 +86,8 @@ void setFixed(Volume& v, const FixedSetting& s, double diagonalL0, double target
 struct Measured {
     double ms = 0.0, rmse = 0.0, predicted = 0.0;
     std::string chosen;
-    std::vector<double> viewRmse; ///< 1/255, per compared view
+    std::vector<double> viewRmse;   ///< 1/255, per compared view
+    std::vector<SweepFrame> frames; ///< per compared view: what was drawn, predicted, measured
 };
 
 /// Fills the line's counts of compared views within the target and within twice it.
@@ -110,7 +110,6 @@ Measured measure(SweepCase& c) {
     double predictedSquares = 0.0;
     std::size_t next = 0;
     Measured m;
-    if (std::getenv("VOLSG_SWEEP_DEBUG")) std::fprintf(stderr, "MEASURE %s auto %d target %g\n", c.name.c_str(), int(c.volume->numPlanes.isDefault()), double(c.volume->errorTarget.getValue()));
     for (std::size_t i = 0; i < c.views.cameras.size(); ++i) {
         options.camera = c.views.cameras[i];
         // Short frames are rendered again until the view has taken 100 ms (at most 9 times) and
@@ -126,7 +125,7 @@ Measured measure(SweepCase& c) {
         if (next < c.views.errorIndices.size() && c.views.errorIndices[next] == int(i)) {
             const double p = std::max(c.volume->slicingStats().predictedRmse, 0.0);
             predictedSquares += p * p;
-            if (std::getenv("VOLSG_SWEEP_DEBUG")) std::fprintf(stderr, "view %zu: %s predicted %.3f\n", i, chosenSettingText(*c.volume).c_str(), p*255.0);
+            m.frames.push_back({int(i), chosenSettingText(*c.volume), p * 255.0, 0.0});
             images.push_back(std::move(image));
             ++next;
         }
@@ -137,7 +136,7 @@ Measured measure(SweepCase& c) {
         ImageError view;
         view.add(images[i], c.reference[i]);
         m.viewRmse.push_back(view.rmse() * 255.0);
-        if (std::getenv("VOLSG_SWEEP_DEBUG")) std::fprintf(stderr, "view %zu rmse %.3f\n", i, view.rmse()*255.0);
+        m.frames[i].measured = view.rmse() * 255.0;
     }
     m.ms = samples.median();
     m.rmse = error.rmse() * 255.0;
@@ -267,6 +266,7 @@ std::vector<BenchRow> runTargetSweep(SweepCase& c, const SweepSettings& st,
         line.defaultRmse = m.rmse;
         line.defaultPredicted = m.predicted;
         countViews(line, m);
+        line.frames = m.frames;
         double bestMs = std::numeric_limits<double>::infinity();
         const FixedRow* best = nullptr;
         for (const FixedRow& f : fixedRows)
@@ -321,6 +321,15 @@ void printSweepTables(const std::vector<SweepLine>& lines,
             meets ? "yes" : (l.defaultRmse <= 2.0 * l.target ? "within 2x" : "NO"), l.viewsWithin,
             l.viewsWithinTwice, l.viewsCompared);
     }
+    std::printf(
+        "\nThe default's frames: per compared view, what the node drew and its error (1/255)"
+        "\n\n| case | target | view | drawn | predicted | measured | measured / target "
+        "|\n| --- | ---: | ---: | --- | ---: | ---: | ---: |\n");
+    for (const SweepLine& l : lines)
+        for (const SweepFrame& f : l.frames)
+            std::printf("| %s | %g | %d | %s | %.3g | %.3g | %.2f |\n", l.scene.c_str(), l.target,
+                        f.view, f.setting.substr(0, f.setting.find(", predicted")).c_str(),
+                        f.predicted, f.measured, l.target > 0.0 ? f.measured / l.target : 0.0);
     if (validation.empty()) return;
     std::printf("\nThe error model: predicted against measured RMSE (1/255) of the fixed "
                 "settings\n\n| case | setting | predicted | measured | ratio |\n| --- | --- | "

@@ -34,6 +34,14 @@ struct SweepSettings {
     bool beforeAfter = false;
 };
 
+/// One compared frame of a default: its view, what the node drew there (chosenSettingText),
+/// the predicted and the measured RMSE (1/255).
+struct SweepFrame {
+    int view = 0;
+    std::string setting;
+    double predicted = 0.0, measured = 0.0;
+};
+
 /// A line of the summary: one case at one target.
 struct SweepLine {
     std::string scene;
@@ -43,7 +51,8 @@ struct SweepLine {
     /// Of the compared views, how many of the default's frames are within the target and
     /// within twice it (the bar: 95% and all).
     int viewsCompared = 0, viewsWithin = 0, viewsWithinTwice = 0;
-    std::string bestSetting; ///< "" when no fixed setting met the target
+    std::vector<SweepFrame> frames; ///< the default's compared frames
+    std::string bestSetting;        ///< "" when no fixed setting met the target
     double bestMs = 0.0, bestRmse = 0.0;
 };
 
