@@ -290,7 +290,8 @@ TEST_CASE("the error model's choice is the cheapest that meets the target") {
                 q.planeSpacingL0 = k / std::pow(2.0, 0.5 * j);
                 q.preIntegrated = pre;
                 if (view.depthL0 / q.planeSpacingL0 < 1.0) continue; // fewer than one plane
-                if (predictImageRmse(model, view, q) > kQualityTargetMargin * request.errorTarget)
+                if (predictImageRmse(model, view, q) >
+                    qualityTargetMargin(VolumeRenderMode::DVR) * request.errorTarget)
                     continue;
                 CHECK(quadratureCost(q, view.depthL0, VolumeRenderMode::DVR, false) >=
                       0.999 * cost);

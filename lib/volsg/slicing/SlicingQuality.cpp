@@ -66,6 +66,10 @@ SlabQuadrature quadratureFor(double samplesPerL0, int samples, bool preIntegrate
 
 } // namespace
 
+double qualityTargetMargin(VolumeRenderMode mode) {
+    return mode == VolumeRenderMode::MIP || mode == VolumeRenderMode::MINIP ? 0.7 : 0.9;
+}
+
 QualityView qualityViewOf(const glm::dmat4& modelView, const glm::dmat4& projection,
                           const glm::dvec3& halfExtent, double L0) {
     QualityView q;
@@ -256,7 +260,7 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
     // evaluation stops once it proves the target missed): the least error among them is
     // found exactly only when nothing meets the target.
     std::vector<std::pair<double, SlabQuadrature>> missed;
-    const double targetWanted = request.errorTarget * kQualityTargetMargin;
+    const double targetWanted = request.errorTarget * qualityTargetMargin(mode);
     double wanted = targetWanted;
     std::vector<bool> ended(walks.size(), false);
     const auto openWalk = [&] { // the cheapest open walk (ties: the earlier), or walks.size()
