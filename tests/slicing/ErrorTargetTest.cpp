@@ -326,6 +326,17 @@ TEST_CASE("the model lays as many planes as the slicer draws over the view's dep
     q.planeSpacingL0 = 0.5 * view.depthL0;
     CHECK(predictImageRmse(model, view, q) ==
           doctest::Approx(model.rayRmse(dir, twoPlanes)).epsilon(1e-12));
+    // numPlanes 1 is one plane, also where the depth's fourth digit would round its spacing
+    // down (53.847 L0 deep: a spacing of 53.8 counts two).
+    const double digit = std::pow(10.0, std::floor(std::log10(view.depthL0)) - 2.0);
+    view.depthL0 = (std::floor(view.depthL0 / digit) + 0.4) * digit;
+    QualityRequest request;
+    request.errorTarget = 1.0;
+    request.numPlanes = 1;
+    request.samplesPerPlane = 16;
+    request.preIntegrated = false;
+    const QualityChoice c = chooseQuality(model, view, request);
+    CHECK(c.predictedRmse == doctest::Approx(model.rayRmse(dir, onePlane)).epsilon(1e-12));
 }
 
 TEST_CASE("the error model predicts the same on one thread and on several") {

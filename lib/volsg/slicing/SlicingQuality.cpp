@@ -52,7 +52,9 @@ SlabQuadrature quadratureFor(double samplesPerL0, int samples, bool preIntegrate
     q.peaks = peaks;
     q.refinePeaks = r.refinePeaks;
     if (r.numPlanes) {
-        q.planeSpacingL0 = roundedSpacing(view.depthL0 / std::max(*r.numPlanes, 1));
+        // Not rounded (predictImageRmseUpTo rounds what it evaluates): a spacing rounded below
+        // depth / numPlanes would count one plane more than the slicer draws.
+        q.planeSpacingL0 = view.depthL0 / std::max(*r.numPlanes, 1) * (1.0 + 1e-9);
         q.samplesPerPlane =
             r.samplesPerPlane
                 ? *r.samplesPerPlane

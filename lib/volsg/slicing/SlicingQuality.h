@@ -51,11 +51,11 @@ double predictImageRmseUpTo(SlabErrorModel& model, const QualityView& view, cons
                             double limit);
 
 /// The chooser takes the model's prediction against this share of the target. DVR: over the
-/// volumes sweep's fixed settings the prediction came out between 0.53 and 4 times the measured
-/// error (10% below 0.82, median 1.19); at 0.9 every default frame of the sweep met its target,
-/// at most 0.94 of it. MIP/MINIP keep 0.7: their error sits on few pixels (the chest CT: 75% of
-/// it in 0.1% of them), and at 0.9 Marschner-Lobb 256^3's default MIP measured 0.29/255, over
-/// VTK's 0.256 (README, "Error targets", session 13).
+/// volumes sweep's fixed settings the prediction came out between 0.54 and 6.8 times the
+/// measured error (10% below 0.97, median 1.25); at 0.9 every default frame of the sweep met
+/// its target, at most 0.95 of it. MIP/MINIP keep 0.7: their error sits on few pixels (the chest
+/// CT: 75% of it in 0.1% of them), and at 0.9 Marschner-Lobb 256^3's default MIP measured 0.29/255,
+/// over VTK's 0.256 (README, "Error targets", session 13).
 double qualityTargetMargin(VolumeRenderMode mode);
 
 /// The cheapest quadrature (by the cost model in SlicingQuality.cpp) whose predicted image RMSE
