@@ -98,13 +98,29 @@ void countViews(SweepLine& line, const Measured& m) {
         line.viewsWithinTwice += e <= 2.0 * line.target ? 1 : 0;
     }
 }
-Measured measure(SweepCase& c) {
-    Renderer renderer;
-    RenderOptions options = c.options;
+/// Renders every view once (uploads, shader builds and the error model's rays are made once,
+/// not per frame).
+void warmUp(Renderer& renderer, SweepCase& c, RenderOptions& options) {
     for (const auto& camera : c.views.cameras) {
         options.camera = camera;
         renderer.render(*c.root, options);
     }
+}
+
+/// The median time of `render`, run again until it has taken 100 ms (at most 9 times): a
+/// single 2-30 ms frame on a 2-core machine is mostly noise.
+template <class Render> double repeatedMs(Render&& render) {
+    Samples view;
+    do {
+        view.ms.push_back(timeMs(render));
+    } while (view.ms.size() < 9 && std::accumulate(view.ms.begin(), view.ms.end(), 0.0) < 100.0);
+    return view.median();
+}
+
+Measured measure(SweepCase& c) {
+    Renderer renderer;
+    RenderOptions options = c.options;
+    warmUp(renderer, c, options);
     Samples samples;
     std::vector<Image> images;
     double predictedSquares = 0.0;
@@ -112,15 +128,8 @@ Measured measure(SweepCase& c) {
     Measured m;
     for (std::size_t i = 0; i < c.views.cameras.size(); ++i) {
         options.camera = c.views.cameras[i];
-        // Short frames are rendered again until the view has taken 100 ms (at most 9 times) and
-        // the median kept: a single 2-30 ms frame on a 2-core machine is mostly noise.
         Image image;
-        Samples view;
-        do {
-            view.ms.push_back(timeMs([&] { image = renderer.render(*c.root, options); }));
-        } while (view.ms.size() < 9 &&
-                 std::accumulate(view.ms.begin(), view.ms.end(), 0.0) < 100.0);
-        samples.ms.push_back(view.median());
+        samples.ms.push_back(repeatedMs([&] { image = renderer.render(*c.root, options); }));
         if (i == 0) m.chosen = chosenSettingText(*c.volume);
         if (next < c.views.errorIndices.size() && c.views.errorIndices[next] == int(i)) {
             const double p = std::max(c.volume->slicingStats().predictedRmse, 0.0);
@@ -149,19 +158,11 @@ Measured measure(SweepCase& c) {
 double timeViews(SweepCase& c) {
     Renderer renderer;
     RenderOptions options = c.options;
-    for (const auto& camera : c.views.cameras) {
-        options.camera = camera;
-        renderer.render(*c.root, options);
-    }
+    warmUp(renderer, c, options);
     Samples samples;
     for (const auto& camera : c.views.cameras) {
         options.camera = camera;
-        Samples view;
-        do {
-            view.ms.push_back(timeMs([&] { renderer.render(*c.root, options); }));
-        } while (view.ms.size() < 9 &&
-                 std::accumulate(view.ms.begin(), view.ms.end(), 0.0) < 100.0);
-        samples.ms.push_back(view.median());
+        samples.ms.push_back(repeatedMs([&] { renderer.render(*c.root, options); }));
     }
     return samples.median();
 }
