@@ -20,7 +20,7 @@ struct CpuImage {
     glm::ivec4 drawn{0};                ///< (x0, y0, x1, y1), exclusive, row 0 at the top
 };
 
-/// One per owner and context (kept in the RenderCache): the program and two textures.
+/// One per owner and context (kept in the RenderCache): two programs and two textures.
 class ImageCompositor {
 public:
     /// The window depth the frame's opaque geometry wrote so far (row 0 at the top, 1 where
@@ -35,7 +35,7 @@ public:
     void composite(FrameContext& frame, const CpuImage& image);
 
 private:
-    Program program_;
+    Program colorProgram_, depthProgram_;
     VertexArray vertexArray_;
     Texture color_, depth_;
     glm::ivec2 size_{0}; ///< of the textures' storage
