@@ -30,6 +30,11 @@ public:
     }
     /// Whether nodes of `type` run a method (false: Node::doAction).
     bool hasMethod(const NodeType& type) const { return find(type).function != nullptr; }
+    /// Whether nodes of `type` run the method that nodes of `base` run (and there is one).
+    bool runsMethodOf(const NodeType& type, const NodeType& base) const {
+        const ErasedFunction f = find(type).function;
+        return f != nullptr && f == find(base).function;
+    }
 
 private:
     using ErasedFunction = void (*)();

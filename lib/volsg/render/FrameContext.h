@@ -15,6 +15,7 @@ namespace volsg {
 
 class RenderTarget;
 class ShapeRenderer;
+struct Image;
 struct RenderRecording;
 
 /// The passes of one frame, in order (docs/SCENE-FORMAT.md section 4.8). The Renderer sets
@@ -82,6 +83,9 @@ struct RenderDebug {
     /// kVertexLightingTolerance (Automatic, VertexLighting.h), or always in one of the two.
     enum class Lighting { Automatic, PerFragment, PerVertex };
     Lighting shapeLighting = Lighting::Automatic;
+    /// A frame the caller reads back whose only drawing is images rendered on the CPU
+    /// (ShearWarpVolume) is composited on the CPU: no GL clear, composite and read-back.
+    bool cpuFrames = true;
 };
 
 /// Sort-last rendering across processes (lib/volsg/sortlast/README.md): this process draws
@@ -139,6 +143,11 @@ struct FrameContext {
     std::uint64_t textGlyphs = 0;
     /// Which part of the volumes this process draws (sort-last; parts 1: all of them).
     VolumePartition partition{};
+    /// A frame drawn on the CPU (RenderDebug::cpuFrames): no GL target; images rendered on the
+    /// CPU are composited into this one, which holds the background. A node that would draw
+    /// with GL sets `needsGl` instead, and the frame is drawn again on GL.
+    Image* cpuImage = nullptr;
+    bool needsGl = false;
 };
 
 } // namespace volsg

@@ -45,8 +45,24 @@ void main() {
 
 } // namespace
 
+void ImageCompositor::blendOver(Image& target, const CpuImage& image) {
+    if (!image.pixels) return;
+    const glm::ivec4 d =
+        glm::clamp(image.drawn, glm::ivec4(0),
+                   glm::ivec4(target.width, target.height, target.width, target.height));
+    for (int y = d.y; y < d.w; ++y) {
+        const std::size_t row = std::size_t(y) * std::size_t(target.width);
+        const glm::vec4* src = image.pixels + row;
+        glm::vec4* dst = target.pixels.data() + row;
+        // GL's blend of the Volume pass (ONE, ONE_MINUS_SRC_ALPHA), in the same float steps.
+        for (int x = d.x; x < d.z; ++x)
+            dst[x] = src[x] + dst[x] * (1.0f - src[x].a);
+    }
+}
+
 void ImageCompositor::readOpaqueDepth(const FrameContext& frame, std::vector<float>& out) {
     out.clear();
+    if (frame.cpuImage) return; // a CPU frame has no depth: nothing opaque is drawn in it
     // Only read when something drew into the depth buffer before (shapes, glTF, slices and
     // composited opaque results count their draws); otherwise it is all 1.
     if (frame.shapes.drawsLastFrame() == 0) return;
@@ -79,6 +95,15 @@ void ImageCompositor::composite(FrameContext& frame, const CpuImage& image) {
     const glm::ivec4 drawn = image.drawn;
     if (drawn.x >= drawn.z || drawn.y >= drawn.w) return;
     const int frameWidth = frame.view.width, frameHeight = frame.view.height;
+    if (frame.cpuImage) {
+        // Opaque results must reach the depth buffer later geometry and volumes test.
+        if (image.windowDepth) {
+            frame.needsGl = true;
+            return;
+        }
+        blendOver(*frame.cpuImage, image);
+        return;
+    }
     glActiveTexture(GL_TEXTURE0);
     if (size_ != glm::ivec2(frameWidth, frameHeight)) {
         color_.image2D(GL_RGBA32F, frameWidth, frameHeight, GL_RGBA, GL_FLOAT, nullptr);

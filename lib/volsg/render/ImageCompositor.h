@@ -8,6 +8,7 @@
 #include <volsg/gl/Program.h>
 #include <volsg/gl/Texture.h>
 #include <volsg/gl/VertexArray.h>
+#include <volsg/image/Image.h>
 #include <volsg/render/FrameContext.h>
 
 namespace volsg {
@@ -32,7 +33,11 @@ public:
     /// (premultiplied: ONE, ONE_MINUS_SRC_ALPHA), then writes the depth of its opaque results
     /// so later geometry and volumes mix with them (counted as a draw). Leaves the GL state of
     /// the pass as it found it.
+    /// On a CPU frame (FrameContext::cpuImage) the colour is blended there by blendOver, and
+    /// an image with opaque results asks for the GL frame instead (FrameContext::needsGl).
     void composite(FrameContext& frame, const CpuImage& image);
+    /// The image's rectangle blended over `target` (of the frame's size) as composite blends it.
+    static void blendOver(Image& target, const CpuImage& image);
 
 private:
     Program colorProgram_, depthProgram_;

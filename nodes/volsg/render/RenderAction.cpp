@@ -1,5 +1,10 @@
 #include <volsg/nodes/ClipPlane.h>
+#include <volsg/nodes/File.h>
+#include <volsg/nodes/LOD.h>
+#include <volsg/nodes/LevelOfDetail.h>
 #include <volsg/nodes/Light.h>
+#include <volsg/nodes/Separator.h>
+#include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/render/BuiltinRendering.h>
 #include <volsg/render/RenderAction.h>
 #include <volsg/render/RenderCaching.h>
@@ -34,7 +39,30 @@ void RenderAction::beginTraversal(Node& root) {
     Action::beginTraversal(root);
 }
 
+namespace {
+
+/// Whether nodes of `type` may be traversed in a CPU frame (FrameContext::cpuImage): those
+/// that draw nothing themselves, and ShearWarpVolume, which composites a CPU image. Any other
+/// render method draws with GL. Asked of the methods themselves, so a node type added later
+/// with a render method of its own is drawn on GL.
+bool drawsInCpuFrames(const NodeType& type) {
+    const ActionMethods& m = RenderAction::methods();
+    if (!m.hasMethod(type)) return true;
+    for (const NodeType* t :
+         {&Separator::classType(), &LOD::classType(), &LevelOfDetail::classType(),
+          &File::classType(), &ShearWarpVolume::classType()})
+        if (m.runsMethodOf(type, *t)) return true;
+    return false;
+}
+
+} // namespace
+
 void RenderAction::dispatch(Node& node) {
+    if (frame_.cpuImage && !drawsInCpuFrames(node.type())) {
+        frame_.needsGl = true;
+        terminate();
+        return;
+    }
     if (frame_.recording) noteForCache(*frame_.recording, node);
     methods().apply(*this, node);
 }

@@ -169,11 +169,26 @@ struct Renderer::Impl {
     /// The last frame drew a volume: this one starts on the float target.
     bool floatTarget = false;
 
+    /// The last frame was drawn on the CPU into `cpuFrame` (the GL target is stale).
+    bool lastOnCpu = false;
+    Image cpuFrame;
+
     /// Draws one frame into `target` (left bound).
     void drawFrame(Node& root, const RenderOptions& options);
+    /// Draws one frame into `cpuFrame` without GL where the scene allows (RenderDebug::cpuFrames:
+    /// it draws nothing but CPU images); false, and nothing drawn, where it does not.
+    bool drawCpuFrame(Node& root, const RenderOptions& options);
+    /// The frame's camera, as every render takes it (the scene's, the options', or one made).
+    RenderView frameView(Node& root, const RenderOptions& options) const;
+    /// What the last frame did, into `stats`.
+    void noteFrame(const FrameContext& frame);
 };
 
-void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
+namespace {
+std::atomic<std::uint64_t> renders{0}; ///< FrameContext::renderSerial
+} // namespace
+
+RenderView Renderer::Impl::frameView(Node& root, const RenderOptions& options) const {
     if (options.width <= 0 || options.height <= 0)
         throw Error("render size " + std::to_string(options.width) + "x" +
                     std::to_string(options.height) + " is empty");
@@ -201,7 +216,51 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
     view.viewer = view.orthographic ? glm::dvec4(glm::normalize(glm::dvec3(eyeToWorld[2])), 0.0)
                                     : glm::dvec4(glm::dvec3(eyeToWorld[3]), 1.0);
     view.headlight = !survey.hasLight();
+    return view;
+}
 
+bool Renderer::Impl::drawCpuFrame(Node& root, const RenderOptions& options) {
+    if (!options.debug.cpuFrames || options.volumePartial || options.opaqueOnly ||
+        options.opaqueDepth || options.samples > 1 || inViewGroup)
+        return false;
+    const RenderView view = frameView(root, options);
+    cpuFrame.width = options.width;
+    cpuFrame.height = options.height;
+    cpuFrame.pixels.assign(std::size_t(options.width) * std::size_t(options.height),
+                           glm::vec4(options.background, 1.0f));
+    FrameContext frame{cache,
+                       shapes,
+                       target,
+                       view,
+                       RenderPass::Opaque,
+                       options.interactive,
+                       options.interactivePlaneScale,
+                       options.debug};
+    frame.renderSerial = ++renders;
+    frame.partition = options.partition;
+    // Separators traverse their children: a render cache would replay GL draws unseen.
+    frame.debug.renderCaching = false;
+    frame.cpuImage = &cpuFrame;
+    // A refused frame ends no cache frame: the GL frame after it marks what it uses and
+    // drops the rest, as after any frame.
+    cache.beginFrame();
+    shapes.beginFrame(view);
+    RenderAction action(frame);
+    for (RenderPass pass : {RenderPass::Opaque, RenderPass::Volume, RenderPass::Transparent}) {
+        action.setPass(pass);
+        action.apply(root);
+        if (frame.needsGl) return false;
+    }
+    cache.endFrame();
+    floatTarget = frame.floatTargetNeeded;
+    lastOnCpu = true;
+    noteFrame(frame);
+    return true;
+}
+
+void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
+    const RenderView view = frameView(root, options);
+    lastOnCpu = false;
     const bool floatColor = floatTarget || options.volumePartial ||
                             !(options.eightBitOutput || options.debug.byteTarget);
     target.resize(options.width, options.height, floatColor);
@@ -226,7 +285,6 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
                        options.interactive,
                        options.interactivePlaneScale,
                        options.debug};
-    static std::atomic<std::uint64_t> renders{0};
     frame.renderSerial = ++renders;
     frame.partition = options.partition;
     shapes.setBatching(options.debug.batchShapes);
@@ -276,7 +334,12 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
 
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+    noteFrame(frame);
+}
+
+void Renderer::Impl::noteFrame(const FrameContext& frame) {
     ++stats.frames;
+    stats.cpuFrame = lastOnCpu;
     stats.meshUploads = shapes.meshUploads();
     stats.programBuilds = shapes.programBuilds();
     stats.cachedEntries = cache.size();
@@ -302,6 +365,8 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
 Renderer::~Renderer() = default;
 
 std::vector<float> Renderer::readWindowDepth() const {
+    if (impl_->lastOnCpu) // nothing opaque: the depth a GL frame would hold
+        return std::vector<float>(impl_->cpuFrame.pixels.size(), 1.0f);
     const RenderTarget& target = impl_->target;
     if (target.width() == 0) return {};
     const BoundFramebuffers caller;
@@ -337,6 +402,12 @@ Image Renderer::render(Node& root, const RenderOptions& options) {
 }
 
 void Renderer::render(Node& root, const RenderOptions& options, Image& into) {
+    if (impl_->drawCpuFrame(root, options)) {
+        into.width = impl_->cpuFrame.width;
+        into.height = impl_->cpuFrame.height;
+        into.pixels.assign(impl_->cpuFrame.pixels.begin(), impl_->cpuFrame.pixels.end());
+        return;
+    }
     renderFrame(root, options);
     readImage(into);
 }
@@ -353,6 +424,10 @@ Image Renderer::readImage() const {
 }
 
 void Renderer::readImage(Image& into) const {
+    if (impl_->lastOnCpu) {
+        into = impl_->cpuFrame;
+        return;
+    }
     const RenderTarget& target = impl_->target;
     const int width = target.width(), height = target.height();
     const std::size_t pixels = std::size_t(width) * std::size_t(height);

@@ -59,9 +59,11 @@ struct RenderOptions {
 /// uploads no mesh and builds no program.
 struct RenderStats {
     std::uint64_t frames = 0;
-    std::uint64_t meshUploads = 0;    ///< meshes sent to the GPU since the Renderer was made
-    std::uint64_t programBuilds = 0;  ///< shader programs compiled and linked since then
-    std::size_t cachedEntries = 0;    ///< per-node GPU caches alive after the last frame
+    std::uint64_t meshUploads = 0;   ///< meshes sent to the GPU since the Renderer was made
+    std::uint64_t programBuilds = 0; ///< shader programs compiled and linked since then
+    std::size_t cachedEntries = 0;   ///< per-node GPU caches alive after the last frame
+    /// The last frame was composited on the CPU (RenderDebug::cpuFrames), not drawn by GL.
+    bool cpuFrame = false;
     std::size_t shapeDraws = 0;       ///< shape draw calls in the last frame
     std::size_t opaqueShapes = 0;     ///< opaque shapes (and glTF primitives) of the last frame
     std::size_t sharedOutShapes = 0;  ///< of those, left to other processes (sort-last)
@@ -96,6 +98,9 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     /// Renders offscreen and reads the linear float result back (renderFrame, then readImage).
+    /// A frame whose only drawing is images rendered on the CPU (ShearWarpVolume) is
+    /// composited on the CPU instead, with the same pixels and no GL frame
+    /// (RenderDebug::cpuFrames, RenderStats::cpuFrame).
     Image render(Node& root, const RenderOptions& options);
     /// The same into `into`, whose storage is reused when it has the size already (a caller
     /// rendering frame after frame pays no allocation and no page faults for the image).
@@ -104,6 +109,7 @@ public:
     /// (readImage, readWindowDepth) until the next one. GL may still be drawing on return.
     void renderFrame(Node& root, const RenderOptions& options);
     /// The last frame's colour as linear floats, row 0 at the top (empty before the first).
+    /// After a CPU frame, its image.
     /// From an 8-bit target (RenderTarget) the values are multiples of 1/255.
     Image readImage() const;
     /// The same into `into` (storage reused when it has the size already).
@@ -114,7 +120,7 @@ public:
 
     /// The depth buffer of the last frame in window coordinates ([0,1], 1 where nothing was
     /// drawn), width*height values with row 0 at the top, like the Image. The context must
-    /// still be current. Empty before the first frame.
+    /// still be current. Empty before the first frame; all 1 after a CPU frame.
     std::vector<float> readWindowDepth() const;
 
     /// Several renders that make one displayed frame (the viewer's section views, a stereo
