@@ -68,7 +68,7 @@ const char* usage =
     "       every form also takes the debug switches [--no-empty-cells]\n"
     "                   [--no-texture-staging] [--max-3d-texture N] [--scalar-kernels]\n"
     "                   [--byte-target] [--no-render-caching] [--no-batching]\n"
-    "                   [--no-shape-detail]\n"
+    "                   [--no-shape-detail] [--gl-frames]\n"
     "                   [--per-fragment-lighting | --per-vertex-lighting]\n"
     "  --error         also compare K of the frames with the reference ray caster (same\n"
     "                  views, same size): RMSE, PSNR and max abs error\n"
@@ -113,6 +113,8 @@ const char* usage =
     "  --byte-target         frames without volumes on an 8-bit target even when float\n"
     "                        pixels are read (the default only for 8-bit output)\n"
     "  --no-render-caching   Separators traverse every frame (no render caches)\n"
+    "  --gl-frames           frames of ShearWarpVolumes alone drawn on GL, not composited on\n"
+    "                        the CPU\n"
     "  --no-batching         opaque shapes drawn one by one, not as instanced batches\n"
     "  --no-shape-detail     spheres, cones and cylinders always drawn from their full\n"
     "                        tessellation (not the coarser ones small projections allow)\n"
@@ -481,6 +483,7 @@ int run(cli::Arguments& args) {
         .integer("--max-3d-texture", st.options.debug.max3DTextureSize, 2, 16384)
         .flag("--scalar-kernels", st.options.debug.vectorKernels, false)
         .flag("--byte-target", st.options.debug.byteTarget)
+        .flag("--gl-frames", st.options.debug.cpuFrames, false)
         .flag("--no-render-caching", st.options.debug.renderCaching, false)
         .flag("--no-batching", st.options.debug.batchShapes, false)
         .flag("--no-shape-detail", st.options.debug.shapeDetail, false)

@@ -63,7 +63,7 @@ const char* usage =
     "usage: volsg-volpack-bench [--case NAME|all]... [--size N] [--frames N] [--frame K]\n"
     "                           [--out DIR] [--data DIR] [--side N] [--no-reference]\n"
     "                           [--tolerance T] [--volpack-only] [--slice-step N]\n"
-    "                           [--max-ray-opacity X] [--no-pixel-shift]\n"
+    "                           [--max-ray-opacity X] [--no-pixel-shift] [--gl-frames]\n"
     "                           [--raw FILE --dims X Y Z [--spacing X Y Z] [--tf LO HI A]]\n"
     "       volsg-volpack-bench --compare IMAGE.pfm REFERENCE.pfm\n"
     "  Renders each case with VolPack and with volsg's ShearWarpVolume (one WHOLE object, DVR,\n"
@@ -72,8 +72,10 @@ const char* usage =
     "  same rotation per frame for both), after one untimed pass over all views. Per frame:\n"
     "  VolPack, the node with 2 threads, the node with 1 thread (alternating, so all see the\n"
     "  same machine load). Prints medians of: VolPack's frame (wall, thread CPU); the node's\n"
-    "  whole frame (Renderer::render: clear, engine, image upload, composite, float read-back)\n"
-    "  and its engine alone (wall, CPU over its threads) at 2 and 1 threads; and, with the\n"
+    "  whole frame (Renderer::render: the engine and the composite over the background, on the\n"
+    "  CPU; with --gl-frames on GL: clear, image upload, composite, float read-back, as a\n"
+    "  window's frame is) and its engine alone (wall, CPU over its threads) at 2 and 1 threads; "
+    "and, with the\n"
     "  reference (default; cached in DIR), the RMSE of both at frame K against the reference\n"
     "  ray caster on the same rays (unshaded cases: the reference does not shade).\n"
     "  --raw         adds cases raw and raw-shaded: an 8-bit raw volume (x fastest) with a grey\n"
@@ -95,7 +97,8 @@ struct Settings {
     double maxRayOpacity = 1.0;
     bool pixelShift = true;
     bool shearWarp = true;
-    int sliceStep = 1; ///< the node's slice step (1: full quality, a still frame)
+    int sliceStep = 1;     ///< the node's slice step (1: full quality, a still frame)
+    bool glFrames = false; ///< the node's frames on GL (RenderDebug::cpuFrames off)
 };
 
 /// What one case measured (medians, ms/frame) and its errors (negative: not measured).
@@ -207,6 +210,7 @@ CaseResult runCase(const Case& c, const Settings& st) {
 
     RenderOptions options;
     options.width = options.height = st.size;
+    options.debug.cpuFrames = !st.glFrames;
     const bench::OrbitViews views = bench::makeOrbitViews(*root, options, st.frames, 0);
     const int keepFrame = std::clamp(st.frame, 0, st.frames - 1);
 
@@ -422,6 +426,7 @@ int run(cli::Arguments& args) {
                })
         .value("--max-ray-opacity", number(st.maxRayOpacity, "--max-ray-opacity"))
         .flag("--no-pixel-shift", st.pixelShift, false)
+        .flag("--gl-frames", st.glFrames)
         .flag("--shearwarp", legacyShearWarp) // the default; kept for older command lines
         .flag("--volpack-only", volpackOnly)
         .add("--compare", [&](cli::Arguments& words, const std::string& option) {
