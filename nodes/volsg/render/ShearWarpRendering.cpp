@@ -106,6 +106,12 @@ ref_ptr<const VolumeGrid> pagedLevelFor(const State& state, const RenderView& vi
 
 void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
     action.needFloatTarget();
+    // Opaque results go through GL's depth buffer: a frame on the CPU is refused before the
+    // engine runs when this node's last frame wrote depth (the first such frame is drawn twice).
+    if (action.frame().cpuImage && node.lastFrame() && node.lastFrame()->wroteDepth) {
+        action.frame().needsGl = true;
+        return;
+    }
     if (action.pass() != RenderPass::Volume) return;
     action.countVolumeInstance();
     const State& state = action.state();
