@@ -173,11 +173,11 @@ struct Renderer::Impl {
     bool lastOnCpu = false;
     Image cpuFrame;
 
-    /// Draws one frame into `target` (left bound).
-    void drawFrame(Node& root, const RenderOptions& options);
+    /// Draws one frame seen as `view` (frameView) into `target` (left bound).
+    void drawFrame(Node& root, const RenderOptions& options, const RenderView& view);
     /// Draws one frame into `cpuFrame` without GL where the scene allows (RenderDebug::cpuFrames:
     /// it draws nothing but CPU images); false, and nothing drawn, where it does not.
-    bool drawCpuFrame(Node& root, const RenderOptions& options);
+    bool drawCpuFrame(Node& root, const RenderOptions& options, const RenderView& view);
     /// The frame's camera, as every render takes it (the scene's, the options', or one made).
     RenderView frameView(Node& root, const RenderOptions& options) const;
     /// What the last frame did, into `stats`.
@@ -219,11 +219,11 @@ RenderView Renderer::Impl::frameView(Node& root, const RenderOptions& options) c
     return view;
 }
 
-bool Renderer::Impl::drawCpuFrame(Node& root, const RenderOptions& options) {
+bool Renderer::Impl::drawCpuFrame(Node& root, const RenderOptions& options,
+                                  const RenderView& view) {
     if (!options.debug.cpuFrames || options.volumePartial || options.opaqueOnly ||
         options.opaqueDepth || options.samples > 1 || inViewGroup)
         return false;
-    const RenderView view = frameView(root, options);
     cpuFrame.width = options.width;
     cpuFrame.height = options.height;
     cpuFrame.pixels.assign(std::size_t(options.width) * std::size_t(options.height),
@@ -258,8 +258,7 @@ bool Renderer::Impl::drawCpuFrame(Node& root, const RenderOptions& options) {
     return true;
 }
 
-void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
-    const RenderView view = frameView(root, options);
+void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options, const RenderView& view) {
     lastOnCpu = false;
     const bool floatColor = floatTarget || options.volumePartial ||
                             !(options.eightBitOutput || options.debug.byteTarget);
@@ -324,7 +323,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options) {
             // reaches every node the volume pass does, so nothing has been composited yet).
             shapes.endFrame();
             floatTarget = true;
-            drawFrame(root, options);
+            drawFrame(root, options, view);
             return;
         }
     }
@@ -402,19 +401,23 @@ Image Renderer::render(Node& root, const RenderOptions& options) {
 }
 
 void Renderer::render(Node& root, const RenderOptions& options, Image& into) {
-    if (impl_->drawCpuFrame(root, options)) {
+    const RenderView view = impl_->frameView(root, options);
+    if (impl_->drawCpuFrame(root, options, view)) {
         into.width = impl_->cpuFrame.width;
         into.height = impl_->cpuFrame.height;
         into.pixels.assign(impl_->cpuFrame.pixels.begin(), impl_->cpuFrame.pixels.end());
         return;
     }
-    renderFrame(root, options);
+    {
+        const BoundFramebuffers caller;
+        impl_->drawFrame(root, options, view);
+    }
     readImage(into);
 }
 
 void Renderer::renderFrame(Node& root, const RenderOptions& options) {
     const BoundFramebuffers caller;
-    impl_->drawFrame(root, options);
+    impl_->drawFrame(root, options, impl_->frameView(root, options));
 }
 
 Image Renderer::readImage() const {
@@ -455,7 +458,7 @@ void Renderer::renderToBoundFramebuffer(Node& root, const RenderOptions& options
     const BoundFramebuffers caller;
     RenderOptions o = options;
     o.eightBitOutput = o.eightBitOutput || drawBufferBits(caller.draw()) <= 8;
-    impl_->drawFrame(root, o);
+    impl_->drawFrame(root, o, impl_->frameView(root, o));
     impl_->target.framebuffer().bind(GL_READ_FRAMEBUFFER);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, caller.draw());
