@@ -3,6 +3,8 @@
 // else draws.
 #include <doctest/doctest.h>
 
+#include "support/ImageDifference.h"
+
 #include <volsg/context/OSMesaContext.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/render/Renderer.h>
@@ -13,6 +15,7 @@
 #include <vector>
 
 using namespace volsg;
+using volsg::test::maxDifference;
 
 namespace {
 
@@ -40,15 +43,6 @@ RenderOptions options(bool cpuFrames) {
     o.background = glm::vec3(0.2f, 0.3f, 0.4f);
     o.debug.cpuFrames = cpuFrames;
     return o;
-}
-
-float maxDifference(const Image& a, const Image& b) {
-    REQUIRE(a.pixels.size() == b.pixels.size());
-    float d = 0.0f;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i)
-        for (int c = 0; c < 4; ++c)
-            d = std::max(d, std::abs(a.pixels[i][c] - b.pixels[i][c]));
-    return d;
 }
 
 /// Pixels that are not the background: the volume was drawn.

@@ -4,6 +4,8 @@
 // shows in the very next frame. Picking and bounding boxes do not see the caches.
 #include <doctest/doctest.h>
 
+#include "support/ImageDifference.h"
+
 #include <volsg/actions/BoundingBoxAction.h>
 #include <volsg/actions/PickAction.h>
 #include <volsg/context/OSMesaContext.h>
@@ -26,6 +28,7 @@
 #include <vector>
 
 using namespace volsg;
+using volsg::test::maxDifference;
 
 namespace {
 
@@ -41,16 +44,6 @@ RenderOptions options(int size, bool caching) {
     o.width = o.height = size;
     o.debug.renderCaching = caching;
     return o;
-}
-
-/// The largest difference of any channel of any pixel.
-float maxDifference(const Image& a, const Image& b) {
-    REQUIRE(a.pixels.size() == b.pixels.size());
-    float most = 0.0f;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i)
-        for (int c = 0; c < 4; ++c)
-            most = std::max(most, std::abs(a.pixels[i][c] - b.pixels[i][c]));
-    return most;
 }
 
 constexpr float kOneStep = 1.0f / 255.0f + 1e-6f;

@@ -180,6 +180,8 @@ struct Renderer::Impl {
     bool drawCpuFrame(Node& root, const RenderOptions& options, const RenderView& view);
     /// The frame's camera, as every render takes it (the scene's, the options', or one made).
     RenderView frameView(Node& root, const RenderOptions& options) const;
+    /// A new frame's context: this render's serial, the options' switches and partition.
+    FrameContext frameOf(const RenderOptions& options, const RenderView& view);
     /// What the last frame did, into `stats`.
     void noteFrame(const FrameContext& frame);
 };
@@ -219,15 +221,7 @@ RenderView Renderer::Impl::frameView(Node& root, const RenderOptions& options) c
     return view;
 }
 
-bool Renderer::Impl::drawCpuFrame(Node& root, const RenderOptions& options,
-                                  const RenderView& view) {
-    if (!options.debug.cpuFrames || options.volumePartial || options.opaqueOnly ||
-        options.opaqueDepth || options.samples > 1 || inViewGroup)
-        return false;
-    cpuFrame.width = options.width;
-    cpuFrame.height = options.height;
-    cpuFrame.pixels.assign(std::size_t(options.width) * std::size_t(options.height),
-                           glm::vec4(options.background, 1.0f));
+FrameContext Renderer::Impl::frameOf(const RenderOptions& options, const RenderView& view) {
     FrameContext frame{cache,
                        shapes,
                        target,
@@ -238,6 +232,19 @@ bool Renderer::Impl::drawCpuFrame(Node& root, const RenderOptions& options,
                        options.debug};
     frame.renderSerial = ++renders;
     frame.partition = options.partition;
+    return frame;
+}
+
+bool Renderer::Impl::drawCpuFrame(Node& root, const RenderOptions& options,
+                                  const RenderView& view) {
+    if (!options.debug.cpuFrames || options.volumePartial || options.opaqueOnly ||
+        options.opaqueDepth || options.samples > 1 || inViewGroup)
+        return false;
+    cpuFrame.width = options.width;
+    cpuFrame.height = options.height;
+    cpuFrame.pixels.assign(std::size_t(options.width) * std::size_t(options.height),
+                           glm::vec4(options.background, 1.0f));
+    FrameContext frame = frameOf(options, view);
     // Separators traverse their children: a render cache would replay GL draws unseen.
     frame.debug.renderCaching = false;
     frame.cpuImage = &cpuFrame;
@@ -276,16 +283,7 @@ void Renderer::Impl::drawFrame(Node& root, const RenderOptions& options, const R
 
     if (!inViewGroup) cache.beginFrame();
     shapes.beginFrame(view);
-    FrameContext frame{cache,
-                       shapes,
-                       target,
-                       view,
-                       RenderPass::Opaque,
-                       options.interactive,
-                       options.interactivePlaneScale,
-                       options.debug};
-    frame.renderSerial = ++renders;
-    frame.partition = options.partition;
+    FrameContext frame = frameOf(options, view);
     shapes.setBatching(options.debug.batchShapes);
     shapes.setShare(options.shapeShareIndex, options.shapeShareCount);
     const bool givenDepth = options.volumePartial && options.opaqueDepth;
