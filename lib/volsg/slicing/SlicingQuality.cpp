@@ -69,7 +69,7 @@ SlabQuadrature quadratureFor(double samplesPerL0, int samples, bool preIntegrate
 } // namespace
 
 double qualityTargetMargin(VolumeRenderMode mode) {
-    return mode == VolumeRenderMode::MIP || mode == VolumeRenderMode::MINIP ? 0.7 : 0.9;
+    return mode == VolumeRenderMode::MIP || mode == VolumeRenderMode::MINIP ? 0.7 : 1.0;
 }
 
 QualityView qualityViewOf(const glm::dmat4& modelView, const glm::dmat4& projection,
