@@ -77,8 +77,8 @@ std::string describe(const Volume& v) {
     return out;
 }
 
-std::string describe(const ShearWarpVolume& v) {
-    const ShearWarpVolume::Quality q = v.lastQuality();
+std::string describe(const ShearWarpVolume& v, bool predictNewViews) {
+    const ShearWarpVolume::Quality q = predictNewViews ? v.lastQuality() : v.lastQualityKnown();
     char line[320];
     std::snprintf(line, sizeof line,
                   "slice step %d, predicted RMSE %.3g/255 (floor %.3g/255 at step 1; target "
@@ -95,14 +95,15 @@ std::string describe(const ShearWarpVolume& v) {
 
 } // namespace
 
-std::vector<std::string> volumeQualityLines(Node& root) {
+std::vector<std::string> volumeQualityLines(Node& root, bool predictNewViews) {
     std::vector<std::string> out;
     int index = 0;
     forEachVolume(root, [&](Node& n) {
         ++index;
         const std::string name = n.getName().empty() ? "" : " (" + n.getName() + ")";
-        const std::string what = n.isA<Volume>() ? describe(static_cast<const Volume&>(n))
-                                                 : describe(static_cast<const ShearWarpVolume&>(n));
+        const std::string what =
+            n.isA<Volume>() ? describe(static_cast<const Volume&>(n))
+                            : describe(static_cast<const ShearWarpVolume&>(n), predictNewViews);
         out.push_back(std::string(n.isA<Volume>() ? "Volume" : "ShearWarpVolume") + " #" +
                       std::to_string(index) + name + ": " + what);
     });

@@ -11,7 +11,10 @@ namespace volsg::cli {
 
 /// "Volume #1 (name): 12 planes x 16 samples (2.1 L0 apart), predicted 0.31/255 (target 0.5)"
 /// for every Volume and ShearWarpVolume under `root`, in traversal order.
-std::vector<std::string> volumeQualityLines(Node& root);
+/// `predictNewViews` false: a ShearWarpVolume whose view direction is new to its error model
+/// reports no prediction rather than casting the model's rays now (ShearWarpVolume::lastQuality;
+/// the viewer while the user drags).
+std::vector<std::string> volumeQualityLines(Node& root, bool predictNewViews = true);
 
 /// Whether a paged Volume's last frame still waited for bricks (PagingStats::converged false):
 /// the next frame will show more.

@@ -4,6 +4,7 @@
 #include "SlicingTestSupport.h"
 
 #include <volsg/io/SceneReader.h>
+#include <volsg/nodes/Camera.h>
 #include <volsg/nodes/ShearWarpVolume.h>
 #include <volsg/nodes/Volume.h>
 #include <volsg/slicing/SlabErrorModel.h>
@@ -408,4 +409,65 @@ Separator {
     sw->interactiveSliceStep = 3;
     renderer.render(*root, options);
     CHECK(sw->lastQuality().sliceStep == 3);
+}
+
+TEST_CASE_FIXTURE(GlFixture, "a ShearWarpVolume frame of a new view direction predicts on read") {
+    // Casting the model's rays for a new direction costs more than the frame: the frame leaves
+    // it to the first lastQuality(), whose prediction is that of the frame's view.
+    const auto sceneAt = [](const char* camera) {
+        return std::string("#Inventor V2.1 ascii\nSeparator {\n") + camera + R"(
+  VolumeData { generator MARSCHNER_LOBB dimensions 32 32 32 }
+  ShearWarpVolume {
+    TransferFunction { red [ 0 0.1, 1 1 ] green [ 0 0.3, 1 0.9 ] blue [ 0 1, 1 0.1 ]
+                       alpha [ 0 0, 1 0.12 ] }
+    VolumeObject { }
+  }
+}
+)";
+    };
+    ref_ptr<Node> root = readSceneFromString(
+        sceneAt("OrthographicCamera { position 0 1.2 4 orientation 1 0 0 -0.2914567944778671 "
+                "height 3.4843 nearDistance 2 farDistance 6.5 focalDistance 4.18 }"),
+        "sw.iv");
+    auto* sw = static_cast<ShearWarpVolume*>(root->children()->back().get());
+    REQUIRE(sw->isA<ShearWarpVolume>());
+    RenderOptions options;
+    options.width = options.height = 64;
+    renderer.render(*root, options);
+    REQUIRE(sw->lastQuality().predicted);
+    const double first = sw->lastQuality().floorRmse;
+    // Turned to look at the volume's centre from elsewhere (another principal axis).
+    auto* camera = static_cast<OrthographicCamera*>(root->children()->front().get());
+    REQUIRE(camera->isA<OrthographicCamera>());
+    const auto lookFrom = [&](const Rotation& r) {
+        camera->orientation = r;
+        camera->position = glm::vec3(r.matrix() * glm::dvec4(0.0, 0.0, 4.18, 1.0));
+    };
+    lookFrom(Rotation{glm::vec3(0.4f, 1.0f, 0.2f), 1.1f});
+    const Image side = renderer.render(*root, options);
+    CHECK_FALSE(sw->lastQualityKnown().predicted); // left to the read
+    const ShearWarpVolume::Quality q = sw->lastQuality();
+    REQUIRE(q.predicted);
+    CHECK(sw->lastQualityKnown().predicted);
+    CHECK(q.predictedRmse == doctest::Approx(q.floorRmse));
+    CHECK(q.floorRmse != doctest::Approx(first)); // this view's, not the first one's
+    const double measured = difference(side, renderReference(*root, options)).rmse;
+    MESSAGE("side view: predicted " << q.predictedRmse / k8Bit << "/255, measured "
+                                    << measured / k8Bit << "/255");
+    CHECK(q.predictedRmse < kPredictionFactor * measured);
+    CHECK(q.predictedRmse > measured / kPredictionFactor);
+    renderer.render(*root, options); // the direction is cast now: predicted in the frame, alike
+    CHECK(sw->lastQualityKnown().predicted);
+    CHECK(sw->lastQualityKnown().floorRmse == q.floorRmse);
+    // An interactive frame of a third direction chooses its step from the directions cast, and
+    // predicts its own on read, at that step.
+    lookFrom(Rotation{glm::vec3(-0.5f, 1.0f, 0.3f), -0.8f});
+    sw->interactiveErrorTarget = 8.0f;
+    options.interactive = true;
+    renderer.render(*root, options);
+    CHECK_FALSE(sw->lastQualityKnown().predicted);
+    const ShearWarpVolume::Quality moving = sw->lastQuality();
+    REQUIRE(moving.predicted);
+    CHECK(moving.sliceStep > 1);
+    CHECK(moving.predictedRmse > moving.floorRmse);
 }

@@ -128,7 +128,8 @@ void Viewer::drawVolumeQuality() {
     // The slider's frame, without its label (a script's errorTarget:U,V).
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
     canvases_["errorTarget"] = {glm::vec2(lo.x, lo.y), glm::vec2(lo.x + width, hi.y)};
-    for (const std::string& line : cli::volumeQualityLines(*root_))
+    // While the user drags, a new view direction is not predicted in the frame's time.
+    for (const std::string& line : cli::volumeQualityLines(*root_, !isInteracting()))
         ImGui::TextWrapped("%s", line.c_str());
 }
 

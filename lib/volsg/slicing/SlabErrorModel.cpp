@@ -874,6 +874,21 @@ bool SlabErrorModel::hasDirection(int dir) const {
     return impl_->sets[dir] != nullptr;
 }
 
+int SlabErrorModel::nearestCastDirection(const glm::dvec3& localDirection) const {
+    const glm::dvec3 d = glm::normalize(localDirection);
+    int best = -1;
+    double bestDot = -1.0;
+    for (int i = 0; i < kDirections; ++i) {
+        if (!impl_->sets[i]) continue;
+        const double c = std::abs(glm::dot(d, directionOf(i)));
+        if (c > bestDot) {
+            bestDot = c;
+            best = i;
+        }
+    }
+    return best;
+}
+
 double SlabErrorModel::depthL0(int dir) const {
     const glm::dvec3 d = directionOf(dir % kDirections);
     const glm::dvec3 h = impl_->grid.half;

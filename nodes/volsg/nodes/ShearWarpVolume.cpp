@@ -40,6 +40,18 @@ SlabErrorModel& ShearWarpVolume::errorModel(const RayCastVolume& volume, std::ui
     return *errorModel_;
 }
 
+const ShearWarpVolume::Quality& ShearWarpVolume::lastQuality() const {
+    if (pendingPrediction_ && errorModel_) {
+        const PendingPrediction p = *pendingPrediction_;
+        quality_.floorRmse = p.scale * errorModel_->preClassifiedRmse(p.direction, 1);
+        quality_.predictedRmse =
+            p.scale * errorModel_->preClassifiedRmse(p.direction, quality_.sliceStep);
+        quality_.predicted = true;
+    }
+    pendingPrediction_.reset();
+    return quality_;
+}
+
 int ShearWarpVolume::sliceStepFor(bool interactive, double interactivePlaneScale) const {
     constexpr int maximumStep = 16;
     if (!interactive) return 1;

@@ -89,8 +89,24 @@ public:
         bool refining = false;
         std::string levelError; ///< why the wanted level could not be read (it stays coarser)
     };
-    const Quality& lastQuality() const { return quality_; }
-    void setLastQuality(const Quality& q) { quality_ = q; }
+    /// The last frame's quality. Where the frame's view direction had no rays of the error
+    /// model cast yet, the prediction is made here, when first read, not in the frame: casting
+    /// them costs more than a frame (8-35 ms a new direction on the head CT and on
+    /// Marschner-Lobb 256^3, against frames of 1-23 ms).
+    const Quality& lastQuality() const;
+    /// The same without predicting: `predicted` is false while a prediction waits for a read
+    /// (for a display drawn every frame, which would cast every new direction).
+    const Quality& lastQualityKnown() const { return quality_; }
+    /// A prediction left to the first lastQuality(): direction `direction` of this node's
+    /// error model (the one errorModel() gave the frame), the image RMSE `scale` times the rays'.
+    struct PendingPrediction {
+        int direction = 0;
+        double scale = 1.0;
+    };
+    void setLastQuality(const Quality& q, std::optional<PendingPrediction> pending = {}) {
+        quality_ = q;
+        pendingPrediction_ = pending;
+    }
     /// The error model of `volume` (built when `key` changes; kept for the next frames).
     SlabErrorModel& errorModel(const RayCastVolume& volume, std::uint64_t key);
     /// The object drawn when the node has no VolumeObject child: WHOLE with every field at its
@@ -117,7 +133,8 @@ private:
     std::vector<ref_ptr<VoxelObject>> lastObjects_;
     glm::dmat4 lastModel_{1.0};
     std::string directory_; ///< of the scene file: a relative voxelFile resolves against it
-    Quality quality_;
+    mutable Quality quality_;
+    mutable std::optional<PendingPrediction> pendingPrediction_; ///< filled by lastQuality()
     std::unique_ptr<SlabErrorModel> errorModel_;
     std::uint64_t errorModelKey_ = 0;
     ref_ptr<VolumeObject> wholeVolume_; ///< wholeVolumeObject()

@@ -24,10 +24,15 @@ namespace {
 /// The error model's prediction for this frame, and the interactive slice step chosen from the
 /// interactive target when interactiveSliceStep is not set. Predicted only where the model
 /// describes shear-warp: every object a transfer-function DVR object, DVR between them, the
-/// data in scope (not a voxel file).
-ShearWarpVolume::Quality predictQuality(ShearWarpVolume& node, const State& state,
-                                        const std::vector<ShearWarpObject>& objects,
-                                        const ShearWarpView& view, const FrameContext& frame) {
+/// data in scope (not a voxel file). A view direction whose rays the model has not cast yet is
+/// left `pending` for ShearWarpVolume::lastQuality(): a still frame draws every slice whatever
+/// the prediction, and an interactive one chooses its step from the nearest direction cast so
+/// far (the first one is cast in the frame).
+ShearWarpVolume::Quality
+predictQuality(ShearWarpVolume& node, const State& state,
+               const std::vector<ShearWarpObject>& objects, const ShearWarpView& view,
+               const FrameContext& frame,
+               std::optional<ShearWarpVolume::PendingPrediction>& pending) {
     ShearWarpVolume::Quality q;
     q.sliceStep = node.sliceStepFor(frame.interactive, frame.interactivePlaneScale);
     const float targetField =
@@ -52,11 +57,13 @@ ShearWarpVolume::Quality predictQuality(ShearWarpVolume& node, const State& stat
         qualityViewOf(view.modelView, view.projection, volume.halfExtent(), model.L0());
     const int dir = SlabErrorModel::nearestDirection(qv.localDirection);
     const double scale = std::sqrt(std::clamp(qv.coverage, 0.0, 1.0));
-    const auto predicted = [&](int step) { return scale * model.preClassifiedRmse(dir, step); };
-    q.predicted = true;
     q.target = double(targetField) / 255.0;
-    q.floorRmse = predicted(1);
     if (frame.interactive && node.interactiveSliceStep.isDefault()) {
+        int from = model.hasDirection(dir) ? dir : model.nearestCastDirection(qv.localDirection);
+        if (from < 0) from = dir;
+        const auto predicted = [&](int step) {
+            return scale * model.preClassifiedRmse(from, step);
+        };
         int step = 1;
         for (const int s : {2, 3, 4, 6, 8, 12, 16}) {
             if (predicted(s) > q.target) break;
@@ -66,7 +73,13 @@ ShearWarpVolume::Quality predictQuality(ShearWarpVolume& node, const State& stat
             frame.interactivePlaneScale > 0.0 ? std::min(frame.interactivePlaneScale, 1.0) : 1.0;
         q.sliceStep = int(std::clamp(std::lround(step / viewer), 1L, 16L));
     }
-    q.predictedRmse = predicted(q.sliceStep);
+    if (!model.hasDirection(dir)) {
+        pending = ShearWarpVolume::PendingPrediction{dir, scale};
+        return q;
+    }
+    q.predicted = true;
+    q.floorRmse = scale * model.preClassifiedRmse(dir, 1);
+    q.predictedRmse = scale * model.preClassifiedRmse(dir, q.sliceStep);
     return q;
 }
 
@@ -133,7 +146,8 @@ void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
                            : InterObjectCompositing::DVR;
     view.threads = node.threads();
     view.valueSortedMip = node.valueSortedMip();
-    ShearWarpVolume::Quality quality = predictQuality(node, state, objects, view, frame);
+    std::optional<ShearWarpVolume::PendingPrediction> pending;
+    ShearWarpVolume::Quality quality = predictQuality(node, state, objects, view, frame, pending);
     quality.pagedLevel = paging.pagedLevel;
     quality.wantedLevel = paging.wantedLevel;
     quality.refining = paging.refining;
@@ -152,7 +166,7 @@ void renderShearWarpVolume(RenderAction& action, ShearWarpVolume& node) {
 
     const ShearWarpFrame& f =
         node.renderFrame(objects, view, std::move(sources), state.modelMatrix());
-    node.setLastQuality(quality);
+    node.setLastQuality(quality, pending);
     if (const VolumeData* data = state.nearestNode<VolumeData>();
         data && data->isA<VolumeSeries>()) // prefetched steps get this view's RenderList
         static_cast<const VolumeSeries*>(data)->setViewAxis(f.stats.principalAxis);
