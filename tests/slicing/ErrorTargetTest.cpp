@@ -205,6 +205,49 @@ TEST_CASE_FIXTURE(GlFixture, "a looser target draws fewer samples") {
     CHECK(interactive.stats.errorTarget == doctest::Approx(0.4 * k8Bit));
 }
 
+TEST_CASE_FIXTURE(GlFixture, "an interactive frame reuses a near direction the model has cast") {
+    // Casting a new direction costs more than an interactive frame: a view within 30 degrees of
+    // one cast is predicted along that one. Still frames and far views cast their own.
+    const RayCastVolume ml = marschnerLobbVolume();
+    auto root = Separator::create();
+    auto node = GridVolume::create();
+    node->description = ml;
+    node->settings = automatic(0.5);
+    root->addChild(node);
+    RenderOptions options;
+    options.width = options.height = 48;
+    const auto frameFrom = [&](const glm::vec3& direction, bool interactive) {
+        const ref_ptr<PerspectiveCamera> camera = framing(*ml.data, direction);
+        options.camera = camera;
+        options.interactive = interactive;
+        Comparison c;
+        c.gl = renderer.render(*root, options);
+        c.stats = node->stats;
+        c.reference = referenceImage(rayCamera(*camera, 48, 48), {ml}, glm::dvec3(0.0));
+        c.difference = difference(c.gl, c.reference);
+        return c;
+    };
+    const Comparison still = frameFrom({0.3f, 0.5f, 1.0f}, false);
+    const int cast = still.stats.modelDirections;
+    CHECK(cast >= 1);
+    // 13 degrees away, nearest to another of the model's directions, interactive: no direction
+    // cast, the interactive target still met.
+    const glm::dvec3 first(0.3, 0.5, 1.0), second(0.6, 0.5, 1.0);
+    REQUIRE(SlabErrorModel::nearestDirection(first) != SlabErrorModel::nearestDirection(second));
+    const Comparison near = frameFrom(glm::vec3(second), true);
+    CHECK(near.stats.modelDirections == cast);
+    CHECK(near.stats.errorTarget == doctest::Approx(2.0 * k8Bit)); // 4x the still target
+    CHECK(near.difference.rmse <= near.stats.errorTarget);
+    // The same view still: its own direction.
+    const Comparison nearStill = frameFrom(glm::vec3(second), false);
+    CHECK(nearStill.stats.modelDirections > cast);
+    // Far from any cast direction, interactive: cast.
+    const int before = nearStill.stats.modelDirections;
+    const Comparison far = frameFrom({1.0f, -0.2f, 0.1f}, true);
+    CHECK(far.stats.modelDirections > before);
+    CHECK(far.difference.rmse <= far.stats.errorTarget);
+}
+
 TEST_CASE_FIXTURE(GlFixture, "the node's explicit fields override the choice") {
     const std::string head =
         "#Inventor V2.1 ascii\nSeparator {\n"

@@ -874,19 +874,31 @@ bool SlabErrorModel::hasDirection(int dir) const {
     return impl_->sets[dir] != nullptr;
 }
 
-int SlabErrorModel::nearestCastDirection(const glm::dvec3& localDirection) const {
+int SlabErrorModel::nearestCastDirection(const glm::dvec3& localDirection, bool wide) const {
     const glm::dvec3 d = glm::normalize(localDirection);
+    const int offset = wide ? kDirections : 0;
     int best = -1;
     double bestDot = -1.0;
     for (int i = 0; i < kDirections; ++i) {
-        if (!impl_->sets[i]) continue;
+        if (!impl_->sets[i + offset]) continue;
         const double c = std::abs(glm::dot(d, directionOf(i)));
         if (c > bestDot) {
             bestDot = c;
-            best = i;
+            best = i + offset;
         }
     }
     return best;
+}
+
+int SlabErrorModel::directionsCast() const {
+    int n = 0;
+    for (const auto& set : impl_->sets)
+        n += set != nullptr;
+    return n;
+}
+
+glm::dvec3 SlabErrorModel::directionVector(int dir) {
+    return directionOf(dir % kDirections);
 }
 
 double SlabErrorModel::depthL0(int dir) const {

@@ -119,9 +119,13 @@ public:
     double cutDifference(int dir, const GridCut& cut);
     /// Whether direction `dir`'s rays are cast already (rayRmse for it is then cheap).
     bool hasDirection(int dir) const;
-    /// Of the directions whose rays are cast already (narrow sets), the nearest to a local view
-    /// direction, either way along it; -1 when none is.
-    int nearestCastDirection(const glm::dvec3& localDirection) const;
+    /// Of the directions whose rays are cast already, the nearest to a local view direction,
+    /// either way along it (`wide`: among the wide sets, index + kDirections); -1 when none is.
+    int nearestCastDirection(const glm::dvec3& localDirection, bool wide = false) const;
+    /// The unit vector of direction `dir` (narrow or wide: the same axis).
+    static glm::dvec3 directionVector(int dir);
+    /// Directions (narrow and wide sets) whose rays are cast.
+    int directionsCast() const;
     /// The box's depth along direction `dir`, in L0.
     double depthL0(int dir) const;
     /// Threads a new direction's rays are integrated on (default: the machine's cores, at most

@@ -58,6 +58,9 @@ struct SlicingStats {
     bool meetsTarget = true;          ///< the prediction is within the target
     double coverage = 0.0;            ///< share of the image's pixels whose rays cross the box
     double qualityMilliseconds = 0.0; ///< CPU time of the choice (part of cpuMilliseconds)
+    /// View directions the error model has cast its rays for so far (each costs more than most
+    /// frames; an interactive frame reuses a near one: VolumeSlicer.cpp).
+    int modelDirections = 0;
     /// Sort-last (FrameContext::partition): where this process's part lies in the front-to-back
     /// order of the parts for this view (0: in front), and the voxels it spans.
     int partPosition = 0;

@@ -117,6 +117,10 @@ void agreeOnCostliest(QualityChoice& choice, const QualityView& view, const Slab
     choice.meetsTarget = values[6] != 0.0;
 }
 
+/// How far (degrees) an interactive frame's view may be from a direction the error model has
+/// cast for the frame to be predicted along that one (two steps of its lattice, 15 degrees).
+constexpr double kInteractiveReuseDegrees = 30.0;
+
 /// What a frame's quality was chosen for, and the model's prediction (SlicingStats).
 struct FrameQuality {
     bool predicted = false;
@@ -124,6 +128,7 @@ struct FrameQuality {
     QualityChoice choice;
     QualityView view;
     double milliseconds = 0.0;
+    int modelDirections = 0; ///< SlicingStats::modelDirections
 };
 
 /// The settings this frame draws with: those the node left automatic chosen as the cheapest
@@ -175,10 +180,26 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
     LocalView modelled = local;
     if (volume.paged) modelled.L0 = volume.paged->finestSpacing();
     quality.view = qualityView(modelled, frame.view);
+    // An interactive frame whose view direction is new to the model takes the nearest one cast
+    // within kInteractiveReuseDegrees: casting a direction costs 14-18 ms on the node suite's
+    // volumes, the frame 20-40 ms. A drag meets new directions all the time; the still frame
+    // after it casts its own.
+    if (frame.interactive) {
+        const bool wide = quality.view.coneTangent > 0.2;
+        const glm::dvec3 d = quality.view.localDirection;
+        const int cast = v.errorModel->nearestCastDirection(d, wide);
+        if (cast >= 0 && !v.errorModel->hasDirection(SlabErrorModel::nearestDirection(d, wide))) {
+            const glm::dvec3 near = SlabErrorModel::directionVector(cast);
+            if (std::abs(glm::dot(glm::normalize(d), near)) >=
+                std::cos(glm::radians(kInteractiveReuseDegrees)))
+                quality.view.localDirection = near;
+        }
+    }
     quality.choice = chooseQuality(*v.errorModel, quality.view, request);
     if (region) agreeOnCostliest(quality.choice, quality.view, *v.errorModel, frame.partition);
     quality.predicted = true;
     quality.target = target;
+    quality.modelDirections = v.errorModel->directionsCast();
 
     SlicingSettings chosen = settings;
     chosen.planeSpacingL0 = quality.choice.quadrature.planeSpacingL0;
@@ -204,6 +225,7 @@ SlicingStats layoutStats(const VolumeTextures& v, const SlicePlan& plan,
         drawn.meetsTarget = quality.choice.meetsTarget;
         drawn.coverage = quality.view.coverage;
         drawn.qualityMilliseconds = quality.milliseconds;
+        drawn.modelDirections = quality.modelDirections;
     }
     drawn.bricksTotal = int(v.bricks.size());
     drawn.brickGrid = v.layout.grid();
