@@ -84,7 +84,10 @@ std::string describe(const ShearWarpVolume& v, bool predictNewViews) {
                   "slice step %d, predicted RMSE %.3g/255 (floor %.3g/255 at step 1; target "
                   "%.3g/255)",
                   q.sliceStep, q.predictedRmse * 255.0, q.floorRmse * 255.0, q.target * 255.0);
-    std::string out = q.predicted ? std::string(line) : std::string("no prediction yet");
+    std::string out = q.predicted ? std::string(line)
+                      : v.predictionPending()
+                          ? std::string("a new view direction: predicted when the view rests")
+                          : std::string("no prediction yet");
     if (q.pagedLevel >= 0) {
         std::snprintf(line, sizeof line, "; paged: level %d read whole (the view asks for %d)%s",
                       q.pagedLevel, q.wantedLevel, q.refining ? ", a finer level loading" : "");

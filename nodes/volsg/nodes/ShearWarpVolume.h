@@ -97,6 +97,8 @@ public:
     /// The same without predicting: `predicted` is false while a prediction waits for a read
     /// (for a display drawn every frame, which would cast every new direction).
     const Quality& lastQualityKnown() const { return quality_; }
+    /// Whether the last frame's prediction waits for lastQuality().
+    bool predictionPending() const { return pendingPrediction_.has_value(); }
     /// A prediction left to the first lastQuality(): direction `direction` of this node's
     /// error model (the one errorModel() gave the frame), the image RMSE `scale` times the rays'.
     struct PendingPrediction {
