@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -167,6 +168,22 @@ TEST_CASE("TimeCounter steps min to max frequency times a second, syncOut each c
     c->duty = {3.0f, 1.0f / 3, 1.0f / 3, 1.0f / 3};
     CHECK(c->valueAt(0.7) == 0);
     CHECK(c->valueAt(0.8) == 2);
+}
+
+TEST_CASE("TimeCounter at a frequency no clock can count stays in range") {
+    // fuzz-binaryscene: frequency and time whose product overflows an int64 cycle count (UB
+    // before), and a product that is not a number.
+    for (const float frequency : {3.0e38f, std::numeric_limits<float>::infinity()}) {
+        auto c = TimeCounter::create();
+        c->min = std::int16_t(1);
+        c->max = std::int16_t(5);
+        c->frequency = frequency;
+        const auto output = [&] { return int(dynamic_cast<SFShort&>(*c->output("output"))()); };
+        for (double t : {0.0, 0.25, 1.5, 1.0e9, 1.0e9})
+            run(*c, t);
+        CHECK(output() >= 1);
+        CHECK(output() <= 5);
+    }
 }
 
 TEST_CASE("Counter counts triggers and wraps with syncOut") {

@@ -123,6 +123,12 @@ void TimeCounter::evaluate(const EngineContext& context) {
         const int count = std::max(1, (max() - lo) / st + 1);
         phase_ = std::floor(phase_) + double((reset() - lo) / st) / count + 1e-9;
     }
+    // A phase no double counts in whole cycles (a huge frequency or clock) keeps its fraction,
+    // which is 0 there; a non-finite one (inf times 0) starts over. So the cycle fits an int64.
+    if (!std::isfinite(phase_))
+        phase_ = 0.0;
+    else if (std::abs(phase_) >= 0x1p52)
+        phase_ -= std::floor(phase_);
     const auto cycle = std::int64_t(std::floor(phase_));
     if (cycle != cycle_) {
         if (cycle_ >= 0 || cycle > 0) out<SFTrigger>(1).touch();
