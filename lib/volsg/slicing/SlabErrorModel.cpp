@@ -845,17 +845,28 @@ SlabErrorModel::SlabErrorModel(const RayCastVolume& volume, std::optional<ModelR
 
 SlabErrorModel::~SlabErrorModel() = default;
 
-int SlabErrorModel::nearestDirection(const glm::dvec3& localDirection, bool wide) {
-    const glm::dvec3 d = glm::normalize(localDirection);
-    int best = 0;
+namespace {
+
+/// Of the directions `keep` accepts, the nearest to unit vector d, either way along it, and
+/// the |cosine| of its angle to d; -1 when none is accepted.
+template <class Keep> std::pair<int, double> nearestAmong(const glm::dvec3& d, Keep keep) {
+    int best = -1;
     double bestDot = -1.0;
-    for (int i = 0; i < kDirections; ++i) {
+    for (int i = 0; i < SlabErrorModel::kDirections; ++i) {
+        if (!keep(i)) continue;
         const double c = std::abs(glm::dot(d, directionOf(i)));
         if (c > bestDot) {
             bestDot = c;
             best = i;
         }
     }
+    return {best, bestDot};
+}
+
+} // namespace
+
+int SlabErrorModel::nearestDirection(const glm::dvec3& localDirection, bool wide) {
+    const int best = nearestAmong(glm::normalize(localDirection), [](int) { return true; }).first;
     return wide ? best + kDirections : best;
 }
 
@@ -874,20 +885,15 @@ bool SlabErrorModel::hasDirection(int dir) const {
     return impl_->sets[dir] != nullptr;
 }
 
-int SlabErrorModel::nearestCastDirection(const glm::dvec3& localDirection, bool wide) const {
-    const glm::dvec3 d = glm::normalize(localDirection);
+int SlabErrorModel::castDirectionNear(const glm::dvec3& localDirection, bool wide,
+                                      double maxDegrees) const {
+    const int exact = nearestDirection(localDirection, wide);
+    if (hasDirection(exact)) return exact;
     const int offset = wide ? kDirections : 0;
-    int best = -1;
-    double bestDot = -1.0;
-    for (int i = 0; i < kDirections; ++i) {
-        if (!impl_->sets[i + offset]) continue;
-        const double c = std::abs(glm::dot(d, directionOf(i)));
-        if (c > bestDot) {
-            bestDot = c;
-            best = i + offset;
-        }
-    }
-    return best;
+    const auto [near, cosine] = nearestAmong(
+        glm::normalize(localDirection), [&](int i) { return impl_->sets[i + offset] != nullptr; });
+    if (near < 0 || cosine < std::cos(glm::radians(maxDegrees))) return -1;
+    return near + offset;
 }
 
 int SlabErrorModel::directionsCast() const {

@@ -119,9 +119,10 @@ public:
     double cutDifference(int dir, const GridCut& cut);
     /// Whether direction `dir`'s rays are cast already (rayRmse for it is then cheap).
     bool hasDirection(int dir) const;
-    /// Of the directions whose rays are cast already, the nearest to a local view direction,
-    /// either way along it (`wide`: among the wide sets, index + kDirections); -1 when none is.
-    int nearestCastDirection(const glm::dvec3& localDirection, bool wide = false) const;
+    /// The direction a view is predicted along without casting rays for a new one: its own
+    /// (nearestDirection) when cast, else the nearest cast within `maxDegrees` of the view
+    /// (`wide`: among the wide sets); -1 when neither is.
+    int castDirectionNear(const glm::dvec3& localDirection, bool wide, double maxDegrees) const;
     /// The unit vector of direction `dir` (narrow or wide: the same axis).
     static glm::dvec3 directionVector(int dir);
     /// Directions (narrow and wide sets) whose rays are cast.

@@ -185,15 +185,11 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
     // volumes, the frame 20-40 ms. A drag meets new directions all the time; the still frame
     // after it casts its own.
     if (frame.interactive) {
-        const bool wide = quality.view.coneTangent > 0.2;
         const glm::dvec3 d = quality.view.localDirection;
-        const int cast = v.errorModel->nearestCastDirection(d, wide);
-        if (cast >= 0 && !v.errorModel->hasDirection(SlabErrorModel::nearestDirection(d, wide))) {
-            const glm::dvec3 near = SlabErrorModel::directionVector(cast);
-            if (std::abs(glm::dot(glm::normalize(d), near)) >=
-                std::cos(glm::radians(kInteractiveReuseDegrees)))
-                quality.view.localDirection = near;
-        }
+        const bool wide = quality.view.coneTangent > 0.2;
+        const int cast = v.errorModel->castDirectionNear(d, wide, kInteractiveReuseDegrees);
+        if (cast >= 0 && cast != SlabErrorModel::nearestDirection(d, wide))
+            quality.view.localDirection = SlabErrorModel::directionVector(cast);
     }
     quality.choice = chooseQuality(*v.errorModel, quality.view, request);
     if (region) agreeOnCostliest(quality.choice, quality.view, *v.errorModel, frame.partition);

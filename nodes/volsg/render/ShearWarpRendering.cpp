@@ -59,8 +59,8 @@ predictQuality(ShearWarpVolume& node, const State& state,
     const double scale = std::sqrt(std::clamp(qv.coverage, 0.0, 1.0));
     q.target = double(targetField) / 255.0;
     if (frame.interactive && node.interactiveSliceStep.isDefault()) {
-        int from = model.hasDirection(dir) ? dir : model.nearestCastDirection(qv.localDirection);
-        if (from < 0) from = dir;
+        int from = model.castDirectionNear(qv.localDirection, false, 180.0);
+        if (from < 0) from = dir; // the model's first direction: cast in this frame
         const auto predicted = [&](int step) {
             return scale * model.preClassifiedRmse(from, step);
         };
