@@ -1,6 +1,7 @@
 // Empty-space skipping inside a brick (lib/volsg/slicing/EmptyCells): which 8^3 cells may emit,
-// and that skipping them changes no image (DVR with one and several samples per plane, MIP
-// with and without peaks), follows transfer-function edits, and still matches the reference.
+// and that skipping them changes no image (DVR with one and several samples per plane, plain
+// and pre-integrated, MIP with and without peaks), follows transfer-function edits, and still
+// matches the reference.
 #include "SlicingTestSupport.h"
 
 #include <cmath>
@@ -94,6 +95,12 @@ TEST_CASE("cells record what trilinear samples in them can read") {
     CHECK(band.flags()[std::size_t(2 + 5 * (2 + 5 * 2))] == 1);
     CHECK(mipEmpty < dvrEmpty);
     CHECK(mipEmpty > 0.2); // the zeros around the ball are below the band either way
+
+    // Pre-integrated lookups read up to one table entry (1/255 in v) beyond a value: data
+    // ending just below the band is empty for point samples, not for them.
+    CHECK_FALSE(table.mayEmit(0.0, 0.199 * 255.0, false, 0, 0));
+    CHECK(table.mayEmit(0.0, 0.199 * 255.0, false, 0, 0, 1.0 / 255.0));
+    CHECK_FALSE(table.mayEmit(0.0, 0.19 * 255.0, false, 0, 0, 1.0 / 255.0));
 }
 
 TEST_CASE("cell ranges equal a brute-force walk over each cell and its layer") {
@@ -148,8 +155,12 @@ TEST_CASE("cell ranges equal a brute-force walk over each cell and its layer") {
 
 TEST_CASE("skipping empty cells changes no image and matches the reference") {
     OSMesaContext context;
-    const TransferFunction1D tf = transferFunction({{0.0, 0.0}, {0.05, 0.02}, {1.0, 0.6}},
-                                                   {{0, 0.2}, {1, 1}}, {{0, 0.9}, {1, 0.3}});
+    const TransferFunction1D rampFromZero = transferFunction(
+        {{0.0, 0.0}, {0.05, 0.02}, {1.0, 0.6}}, {{0, 0.2}, {1, 1}}, {{0, 0.9}, {1, 0.3}});
+    const TransferFunction1D bandAboveZero =
+        transferFunction({{0.0, 0.0}, {0.02, 0.0}, {0.05, 0.3}, {0.3, 0.0}, {1.0, 0.6}},
+                         {{0, 0.2}, {1, 1}}, {{0, 0.9}, {1, 0.3}});
+    const TransferFunction1D& tf = rampFromZero;
     auto camera = framing(*ball(), {0.4f, 0.3f, 1.0f});
     auto stepCamera = framing(*ball(), {0.0f, 0.2f, 1.0f}); // the step's face seen edge-on
     struct Case {
@@ -158,6 +169,7 @@ TEST_CASE("skipping empty cells changes no image and matches the reference") {
         int samples;
         bool peaks;
         int planes = 0; // automatic
+        bool preIntegrated = false;
     };
     // With peaks and several samples (the lean loop), the cells a slab crosses are walked
     // face by face; 3 planes make slabs that cross several cells of air and of the ball.
@@ -167,12 +179,19 @@ TEST_CASE("skipping empty cells changes no image and matches the reference") {
           Case{"MIP with peaks", VolumeRenderMode::MIP, 1, true},
           Case{"MIP without peaks, 4 samples", VolumeRenderMode::MIP, 4, false},
           Case{"MIP with peaks, 4 samples", VolumeRenderMode::MIP, 4, true},
-          Case{"MIP with peaks, 3 planes x 16", VolumeRenderMode::MIP, 16, true, 3}}) {
+          Case{"MIP with peaks, 3 planes x 16", VolumeRenderMode::MIP, 16, true, 3},
+          // Pre-integrated parts span their slab: rows reach over it, no point discards.
+          Case{"DVR pre-integrated, 1 sample per plane", VolumeRenderMode::DVR, 1, true, 0, true},
+          Case{"DVR pre-integrated, 6 planes x 16", VolumeRenderMode::DVR, 16, true, 6, true}}) {
         INFO(c.name);
         SlicingSettings settings;
         settings.samplesPerPlane = c.samples;
         settings.mipPeaks = c.peaks;
         settings.numPlanes = c.planes;
+        settings.preIntegrated = c.preIntegrated;
+        // Pre-integration's lookups read a table entry (1/255 in v) beyond a value: its cells
+        // are empty under a function transparent a little above the zeros.
+        const TransferFunction1D& tf = c.preIntegrated ? bandAboveZero : rampFromZero;
         const SkipPair step =
             renderBoth(ballVolume(tf, c.mode, stepAtCellFace()), settings, *stepCamera);
         CHECK(step.skipping.stats.emptyCells > 0.15); // cells x = 0 (voxels 0..8): a fifth

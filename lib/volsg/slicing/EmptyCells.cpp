@@ -114,7 +114,7 @@ void EmptyCells::measure(const VolumeGrid& data, const VolumeGrid* tags, double 
     flags_.clear();
 }
 
-void EmptyCells::classify(const TransferTable& table, bool tagged, bool maximum) {
+void EmptyCells::classify(const TransferTable& table, bool tagged, bool maximum, double padV) {
     flags_.resize(dataMin_.size());
     std::size_t empty = 0;
     const glm::dvec2 range = table.dataRange(0);
@@ -126,7 +126,7 @@ void EmptyCells::classify(const TransferTable& table, bool tagged, bool maximum)
                                       TransferFunction1D::normalise(dataMax_[i], range.x, range.y));
             may = alpha.maxOver(0.0, v) > 0.0;
         } else {
-            may = table.mayEmit(dataMin_[i], dataMax_[i], tagged, tagMin_[i], tagMax_[i]);
+            may = table.mayEmit(dataMin_[i], dataMax_[i], tagged, tagMin_[i], tagMax_[i], padV);
         }
         flags_[i] = may ? 1 : 0;
         empty += flags_[i] == 0;

@@ -34,8 +34,10 @@ public:
     /// One byte per cell, x fastest. DVR (`maximum` false): 1 where the table may give the
     /// cell's data some opacity. MIP (`maximum` true, untagged): 1 unless the table is
     /// transparent from the lowest value up to the cell's largest, so that a skipped sample is
-    /// below every sample the table shows and cannot be the maximum that matters.
-    void classify(const TransferTable& table, bool tagged, bool maximum = false);
+    /// below every sample the table shows and cannot be the maximum that matters. `padV`
+    /// (DVR): each cell's v interval widened by this much each way (TransferTable::mayEmit),
+    /// for a table whose filtered lookups read entries beyond a value.
+    void classify(const TransferTable& table, bool tagged, bool maximum = false, double padV = 0.0);
     const std::vector<std::uint8_t>& flags() const { return flags_; }
     glm::ivec3 cells() const { return cells_; }
     /// Cell i's (min, max) data as measured (x fastest).

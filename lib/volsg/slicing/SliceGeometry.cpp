@@ -39,7 +39,9 @@ glm::dvec2 nearFar(const glm::dmat4& p, bool orthographic) {
 double sampleReachLocal(const SlicePlan& plan, bool mipPeaks) {
     const LocalView& local = plan.local;
     const Mode mode = plan.method.mode;
-    const bool onePoint = plan.method.slabSamples == 1 && (mode == kDvr || !mipPeaks);
+    // (A pre-integrated part spans its slab, one sample a plane or many.)
+    const bool onePoint =
+        plan.method.slabSamples == 1 && (mode == kDvr ? !plan.method.preIntegrated : !mipPeaks);
     if (onePoint) return 0.0;
     double cosMin = 1.0; // of the angle between the view axis and the longest ray
     if (!local.orthographic)

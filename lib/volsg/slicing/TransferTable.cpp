@@ -52,21 +52,22 @@ void TransferTable::build(const std::map<int, TransferFunction1D>& functions,
     }
 }
 
-bool TransferTable::rowMayEmit(const Row& row, double dataMin, double dataMax) const {
+bool TransferTable::rowMayEmit(const Row& row, double dataMin, double dataMax, double padV) const {
     // normalise() is monotonic, so the ends bound v over the interval (either order).
     const double v0 = TransferFunction1D::normalise(dataMin, row.range.x, row.range.y);
     const double v1 = TransferFunction1D::normalise(dataMax, row.range.x, row.range.y);
-    return row.function.channel(TransferFunction1D::Alpha).maxOver(v0, v1) > 0.0;
+    return row.function.channel(TransferFunction1D::Alpha)
+               .maxOver(std::min(v0, v1) - padV, std::max(v0, v1) + padV) > 0.0;
 }
 
-bool TransferTable::mayEmit(double dataMin, double dataMax, bool tagged, int tagMin,
-                            int tagMax) const {
+bool TransferTable::mayEmit(double dataMin, double dataMax, bool tagged, int tagMin, int tagMax,
+                            double padV) const {
     if (rows_.empty()) return true;
-    if (rowMayEmit(rows_[0], dataMin, dataMax)) return true;
+    if (rowMayEmit(rows_[0], dataMin, dataMax, padV)) return true;
     if (!tagged) return false;
     for (std::size_t r = 1; r < rows_.size(); ++r)
         if (rows_[r].tag >= tagMin && rows_[r].tag <= tagMax &&
-            rowMayEmit(rows_[r], dataMin, dataMax))
+            rowMayEmit(rows_[r], dataMin, dataMax, padV))
             return true;
     return false;
 }

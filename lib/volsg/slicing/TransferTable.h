@@ -52,7 +52,10 @@ public:
     /// Whether a region whose trilinear data values lie in [dataMin, dataMax] and whose tags lie
     /// in [tagMin, tagMax] (ignored when `tagged` is false) can have a non-zero opacity under
     /// any row that applies to it. Conservative: the default row always counts for tagged data.
-    bool mayEmit(double dataMin, double dataMax, bool tagged, int tagMin, int tagMax) const;
+    /// `padV`: the normalised interval widened by this much each way (a table whose filtered
+    /// lookups read entries that far beyond a value).
+    bool mayEmit(double dataMin, double dataMax, bool tagged, int tagMin, int tagMax,
+                 double padV = 0.0) const;
 
 private:
     struct Row {
@@ -60,7 +63,7 @@ private:
         TransferFunction1D function;
         glm::dvec2 range{0.0, 1.0};
     };
-    bool rowMayEmit(const Row& row, double dataMin, double dataMax) const;
+    bool rowMayEmit(const Row& row, double dataMin, double dataMax, double padV) const;
 
     std::vector<Row> rows_;
     std::vector<float> texels_;

@@ -64,13 +64,14 @@ SliceMethod prepareVolume(VolumeTextures& v, const SliceShared& shared, TextureS
         settings.preIntegrated && m.mode == kDvr && v.table.rows() <= PreIntegrationTable::kMaxRows;
     if (m.preIntegrated) preparePreIntegration(v);
     // Empty cells are skipped (rows left out of the geometry, one-sample fragments discarded)
-    // where that is exact: DVR samples each part at one point (not pre-integrated, not split at
-    // tag cells); MIP of one row (tags would let a skipped sample's row matter). MINIP and
-    // AVERAGE see every sample.
+    // where that is exact: DVR of one row (not split at tag cells), each part sampled at one
+    // point or pre-integrated between the data at its ends (cells classified for that table's
+    // filter; the rows reach over the whole slab, and no fragment is discarded by its point,
+    // since its segment spans the slab); MIP of one row (tags would let a skipped sample's row
+    // matter). MINIP and AVERAGE see every sample.
     m.skipCells =
-        settings.skipEmptyCells && !volume.paged &&
-        ((m.mode == kDvr && !m.tagged && !m.preIntegrated) || (m.mode == kMip && !m.tagged));
-    if (m.skipCells) prepareCells(v, m.mode == kMip ? 1 : 0);
+        settings.skipEmptyCells && !volume.paged && !m.tagged && (m.mode == kDvr || m.mode == kMip);
+    if (m.skipCells) prepareCells(v, m.mode == kMip ? 1 : m.preIntegrated ? 2 : 0);
     m.hasPlaneOpacity = m.mode == kDvr && planeOpacityMatters(volume.planeOpacity);
     if (m.hasPlaneOpacity) preparePlaneOpacity(v, volume.planeOpacity);
     prepareFilter(v, settings.nearest);

@@ -84,7 +84,7 @@ struct VolumeTextures {
     EmptyCells cells;    ///< measured on first use
     Texture cellTexture; ///< EmptyCells::flags as R8UI, one texel per cell
     std::uint64_t cellTableKey = 0;
-    int cellKind = -1; ///< 0 DVR, 1 MIP flags in cellTexture; -1 none yet
+    int cellKind = -1; ///< prepareCells' kind of the flags in cellTexture; -1 none yet
     CellRows rows;     ///< the cell flags dilated by rowsReach
     int rowsReach = -1;
     std::uint64_t rowsTableKey = 0;
@@ -139,8 +139,10 @@ BrickLayout::Limits layoutLimits(const VolumeGrid& data, const VolumeGrid* tags,
                                  const SliceShared& shared, std::uint64_t budget, int guard);
 void prepareLayout(VolumeTextures& v, const SliceShared& shared, std::uint64_t budget, int guard);
 void prepareTable(VolumeTextures& v, const RayCastVolume& volume, std::uint64_t key);
-/// The empty-cell flags for this table and kind (DVR: may emit; MIP: may be a shown maximum),
-/// measured on first use and uploaded when the table or the kind changes.
+/// The empty-cell flags for this table and kind (0 DVR: may emit; 1 MIP: may be a shown
+/// maximum; 2 pre-integrated DVR: may emit with the pre-integration table's filter, whose
+/// lookups read up to one of its entries beyond a value), measured on first use and uploaded
+/// when the table or the kind changes.
 void prepareCells(VolumeTextures& v, int kind);
 void preparePreIntegration(VolumeTextures& v);
 /// Whether planeOpacity changes anything: m = 1 everywhere needs no lookup.
