@@ -163,8 +163,11 @@ TEST_CASE("below the model's floor the search draws near the floor, with bounded
     const double target = 0.1 / 255.0;
     const QualityChoice c =
         chooseQuality(model, view, QualityRequest{target, {}, {}, {}, {}, true});
-    const int dir = SlabErrorModel::nearestDirection(view.localDirection);
-    const double work = model.samplesEvaluated() / model.samplesOfFullEvaluation(dir, 32.0);
+    double full = 0.0; // one evaluation of every ray of the view's directions at the top rate
+    const ModelDirections dirs = directionsOf(view, model.mode());
+    for (int i = 0; i < dirs.count; ++i)
+        full += model.samplesOfFullEvaluation(dirs.dir[std::size_t(i)], 32.0);
+    const double work = model.samplesEvaluated() / full;
     // The best of a spread of candidates, exactly (after the choice: its cache is warm).
     double best = 1e300;
     for (const bool pre : {false, true})
@@ -355,6 +358,8 @@ TEST_CASE("the model lays as many planes as the slicer draws over the view's dep
     QualityView view;
     view.localDirection = glm::normalize(glm::dvec3(0.3, 0.5, -1.0));
     const int dir = SlabErrorModel::nearestDirection(view.localDirection);
+    view.directions.dir[0] = dir; // predicted along the nearest direction alone
+    view.directions.count = 1;
     view.depthL0 = 0.9 * model.depthL0(dir);
     view.coverage = 1.0;
     SlabQuadrature q;
@@ -381,6 +386,21 @@ TEST_CASE("the model lays as many planes as the slicer draws over the view's dep
     request.preIntegrated = false;
     const QualityChoice c = chooseQuality(model, view, request);
     CHECK(c.predictedRmse == doctest::Approx(model.rayRmse(dir, onePlane)).epsilon(1e-12));
+    // The view's own directions: the root of the mean square of each one's prediction.
+    QualityView own = view;
+    own.directions = {};
+    const ModelDirections dirs = directionsOf(own, model.mode());
+    REQUIRE(dirs.count == SlabErrorModel::kNearDirections);
+    CHECK(dirs.dir[0] == dir);
+    double sum = 0.0;
+    for (int i = 0; i < dirs.count; ++i) {
+        QualityView one = view;
+        one.directions.dir[0] = dirs.dir[std::size_t(i)];
+        const double e = predictImageRmse(model, one, q);
+        sum += e * e;
+    }
+    CHECK(predictImageRmse(model, own, q) ==
+          doctest::Approx(std::sqrt(sum / dirs.count)).epsilon(1e-12));
 }
 
 TEST_CASE("the error model predicts the same on one thread and on several") {

@@ -60,7 +60,7 @@ LevelOfDetailError predictLevelOfDetailError(SlabErrorModel& model, const Qualit
     });
     out.rmse = 0.0;
     if (!coarse) return out;
-    const int dir = SlabErrorModel::nearestDirection(view.localDirection, view.coneTangent > 0.2);
+    const int dir = directionsOf(view, model.mode()).dir[0];
     out.rmse = std::sqrt(std::clamp(view.coverage, 0.0, 1.0)) *
                model.cutDifference(dir, gridCutOf(paged, drawn));
     return out;

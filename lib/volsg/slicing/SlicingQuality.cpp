@@ -68,6 +68,63 @@ SlabQuadrature quadratureFor(double samplesPerL0, int samples, bool preIntegrate
 
 } // namespace
 
+ModelDirections modelDirectionsOf(const glm::dvec3& localDirection, double coneTangent,
+                                  VolumeRenderMode mode) {
+    ModelDirections out;
+    if (mode == VolumeRenderMode::MIP || mode == VolumeRenderMode::MINIP) {
+        out.dir[0] =
+            SlabErrorModel::nearestDirection(localDirection, coneTangent > kWideExtremeTangent);
+        out.count = 1;
+        return out;
+    }
+    if (coneTangent > kWideViewTangent) {
+        out.dir[0] = SlabErrorModel::nearestDirection(localDirection, true);
+        out.count = 1;
+        return out;
+    }
+    out.dir = SlabErrorModel::nearestDirections(localDirection);
+    out.count = SlabErrorModel::kNearDirections;
+    return out;
+}
+
+ModelDirections directionsOf(const QualityView& view, VolumeRenderMode mode) {
+    return view.directions.count > 0
+               ? view.directions
+               : modelDirectionsOf(view.localDirection, view.coneTangent, mode);
+}
+
+ModelDirections castDirectionsNear(const SlabErrorModel& model, const QualityView& view,
+                                   double maxDegrees) {
+    const ModelDirections own = directionsOf(view, model.mode());
+    ModelDirections cast;
+    for (int i = 0; i < own.count; ++i)
+        if (model.hasDirection(own.dir[std::size_t(i)]))
+            cast.dir[std::size_t(cast.count++)] = own.dir[std::size_t(i)];
+    if (cast.count > 0) return cast;
+    const bool wide = own.dir[0] >= SlabErrorModel::kDirections;
+    const int near = model.castDirectionNear(view.localDirection, wide, maxDegrees);
+    if (near < 0) return own;
+    cast.dir[0] = near;
+    cast.count = 1;
+    return cast;
+}
+
+double preClassifiedRmseAlong(SlabErrorModel& model, const ModelDirections& directions,
+                              int sliceStep) {
+    double sum = 0.0;
+    for (int i = 0; i < directions.count; ++i) {
+        const double e = model.preClassifiedRmse(directions.dir[std::size_t(i)], sliceStep);
+        sum += e * e;
+    }
+    return std::sqrt(sum / double(std::max(directions.count, 1)));
+}
+
+bool directionsCast(const SlabErrorModel& model, const ModelDirections& directions) {
+    for (int i = 0; i < directions.count; ++i)
+        if (!model.hasDirection(directions.dir[std::size_t(i)])) return false;
+    return true;
+}
+
 double qualityTargetMargin(VolumeRenderMode mode) {
     return mode == VolumeRenderMode::MIP || mode == VolumeRenderMode::MINIP ? 0.7 : 1.0;
 }
@@ -160,27 +217,37 @@ double predictImageRmse(SlabErrorModel& model, const QualityView& view, const Sl
 
 double predictImageRmseUpTo(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q,
                             double limit) {
-    // A perspective view's rays spread: the model's wide ray sets spread alike (their slabs
-    // stretch as the view's do); a narrow view stretches its slabs by the mean.
-    const bool wide = view.coneTangent > 0.2;
-    const int dir = SlabErrorModel::nearestDirection(view.localDirection, wide);
-    // The slicer lays ceil(depth / spacing) planes over the view's depth. The model's direction
-    // (up to 8 degrees off) sees the box deeper or shallower: it lays as many planes over its
-    // own depth, or a layout of one or two planes would be predicted with two or three.
-    const double planes = std::max(1.0, std::ceil(view.depthL0 / q.planeSpacingL0 - 1e-9));
-    SlabQuadrature stretched = q;
-    // (Rounding spacings to 3 digits moves them by at most 0.5%: 0.6% more keeps the count.)
-    stretched.planeSpacingL0 = model.depthL0(dir) / planes * 1.006;
-    if (!wide) stretched.planeSpacingL0 *= view.slabStretch;
-    stretched.planeSpacingL0 = roundedSpacing(stretched.planeSpacingL0);
-    // Denser than the search's top rate (numPlanes 100000, samplesPerPlane 256): predicted at
-    // that rate, an upper bound, so the model's work stays bounded.
-    const double topRate = std::pow(2.0, 0.5 * kHighestStep);
-    if (stretched.samplesPerL0() > topRate)
-        stretched.planeSpacingL0 = roundedSpacing(stretched.samplesPerPlane / topRate);
     const double scale = std::sqrt(std::clamp(view.coverage, 0.0, 1.0));
     if (!(scale > 0.0)) return 0.0;
-    return scale * model.rayRmseUpTo(dir, stretched, limit / scale);
+    const ModelDirections dirs = directionsOf(view, model.mode());
+    // The slicer lays ceil(depth / spacing) planes over the view's depth. A model direction
+    // (up to 15 degrees off) sees the box deeper or shallower: it lays as many planes over its
+    // own depth, or a layout of one or two planes would be predicted with two or three.
+    const double planes = std::max(1.0, std::ceil(view.depthL0 / q.planeSpacingL0 - 1e-9));
+    const double topRate = std::pow(2.0, 0.5 * kHighestStep);
+    // The mean square over the directions is over limit^2 once their sum is over n limit^2:
+    // each direction is evaluated up to what the sum has left.
+    const double limitSum = double(dirs.count) * (limit / scale) * (limit / scale);
+    double sum = 0.0;
+    for (int i = 0; i < dirs.count; ++i) {
+        const int dir = dirs.dir[std::size_t(i)];
+        SlabQuadrature stretched = q;
+        // (Rounding spacings to 3 digits moves them by at most 0.5%: 0.6% more keeps the count.)
+        stretched.planeSpacingL0 = model.depthL0(dir) / planes * 1.006;
+        // A narrow ray set stretches its slabs as the view's rays do on average; a wide set's
+        // rays spread and stretch as such a view's.
+        if (dir < SlabErrorModel::kDirections) stretched.planeSpacingL0 *= view.slabStretch;
+        stretched.planeSpacingL0 = roundedSpacing(stretched.planeSpacingL0);
+        // Denser than the search's top rate (numPlanes 100000, samplesPerPlane 256): predicted
+        // at that rate, an upper bound, so the model's work stays bounded.
+        if (stretched.samplesPerL0() > topRate)
+            stretched.planeSpacingL0 = roundedSpacing(stretched.samplesPerPlane / topRate);
+        const double left = limitSum - sum;
+        const double e = model.rayRmseUpTo(dir, stretched, std::sqrt(std::max(left, 0.0)));
+        sum += e * e;
+        if (sum > limitSum) break; // proven over the limit
+    }
+    return scale * std::sqrt(sum / double(std::max(dirs.count, 1)));
 }
 
 QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
@@ -252,12 +319,13 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
     QualityChoice best;
     bool found = false;
     const double topRate = std::pow(2.0, 0.5 * kHighestStep);
-    const int direction =
-        SlabErrorModel::nearestDirection(view.localDirection, view.coneTangent > 0.2);
+    const ModelDirections dirs = directionsOf(view, model.mode());
     bool floorChecked = single || request.numPlanes.has_value();
-    const double floorCheckWork =
-        floorChecked ? 0.0
-                     : kFloorCheckEvaluations * model.samplesOfFullEvaluation(direction, topRate);
+    double floorCheckWork = 0.0;
+    if (!floorChecked)
+        for (int i = 0; i < dirs.count; ++i)
+            floorCheckWork += kFloorCheckEvaluations *
+                              model.samplesOfFullEvaluation(dirs.dir[std::size_t(i)], topRate);
     // Candidates that missed the target, with their error or a lower bound of it (an
     // evaluation stops once it proves the target missed): the least error among them is
     // found exactly only when nothing meets the target.
@@ -352,7 +420,7 @@ QualityChoice chooseQuality(SlabErrorModel& model, const QualityView& view,
         }
         best.meetsTarget = false;
     }
-    best.direction = direction;
+    best.direction = dirs.dir[0];
     return best;
 }
 

@@ -2,6 +2,7 @@
 // From an error target to the slicer's settings: the cheapest slab quadrature whose predicted
 // error (SlabErrorModel) meets the target in this view, the explicit settings kept as given.
 
+#include <array>
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -20,6 +21,23 @@ struct QualityRequest {
     bool refinePeaks = true;
 };
 
+/// The error model's directions a view is predicted along: the mean square of their RMSEs.
+struct ModelDirections {
+    std::array<int, SlabErrorModel::kNearDirections> dir{};
+    int count = 0; ///< 0: the view's own (modelDirectionsOf)
+};
+
+/// A view's model directions. DVR: the kNearDirections narrow ones nearest its axis (sharing
+/// one direction's rays), or for a view whose rays spread wider than kWideViewTangent (a
+/// camera in or at the box) the wide ray set nearest it, whose slabs meet the box's faces as
+/// such a view's do. MIP/MINIP: the one nearest, wide beyond kWideExtremeTangent, with all of
+/// a direction's rays: their error sits on few pixels, and a third of the rays missed them
+/// (ErrorTargetTest's thin shell: predicted 0.35/255, measured 0.52).
+constexpr double kWideViewTangent = 0.6;
+constexpr double kWideExtremeTangent = 0.2;
+ModelDirections modelDirectionsOf(const glm::dvec3& localDirection, double coneTangent,
+                                  VolumeRenderMode mode);
+
 /// The view as the error depends on it.
 struct QualityView {
     glm::dvec3 localDirection{0.0, 0.0, -1.0}; ///< the view axis in the volume's local frame
@@ -27,7 +45,19 @@ struct QualityView {
     double coverage = 1.0;    ///< share of the image's pixels whose rays cross the box
     double slabStretch = 1.0; ///< mean ray length per unit of view depth (perspective: > 1)
     double coneTangent = 0.0; ///< tangent of the widest angle of a ray on the box to the axis
+    /// What it is predicted along when set (an interactive frame's directions the model has
+    /// cast, castDirectionsNear); unset: the view's own (modelDirectionsOf).
+    ModelDirections directions;
 };
+
+/// The directions a view is predicted along in `mode`: view.directions when set, else its own.
+ModelDirections directionsOf(const QualityView& view, VolumeRenderMode mode);
+
+/// A view's directions without casting rays for a new one: those of its own the model has
+/// cast; when none is, the nearest cast within `maxDegrees` of the view (of the same ray set);
+/// when none is, its own (the prediction casts them).
+ModelDirections castDirectionsNear(const SlabErrorModel& model, const QualityView& view,
+                                   double maxDegrees);
 
 /// The view of a volume box [-halfExtent, halfExtent] under `modelView` (local to eye) and
 /// `projection`: its axis, its depth in L0, and over a 24 x 24 grid of pixel rays the share
@@ -39,16 +69,25 @@ struct QualityChoice {
     SlabQuadrature quadrature;  ///< plane spacing (L0, along the view), samples, methods
     double predictedRmse = 0.0; ///< of the image, 0..1 units
     bool meetsTarget = true;
-    int direction = 0; ///< SlabErrorModel's direction used
+    int direction = 0; ///< SlabErrorModel's direction used (the first of the view's)
 };
 
 /// The image RMSE the model predicts for quadrature q in this view: sqrt(coverage) times the
-/// RMSE of the rays through the box, with slabs stretched as perspective rays stretch them.
+/// RMSE of the rays through the box along the view's directions (the root of their mean
+/// square), with slabs stretched as perspective rays stretch them.
 double predictImageRmse(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q);
 /// predictImageRmse if it is at most `limit`, else a value above `limit` and at most it (the
 /// evaluation stops once the rays seen prove the limit passed).
 double predictImageRmseUpTo(SlabErrorModel& model, const QualityView& view, const SlabQuadrature& q,
                             double limit);
+
+/// Shear-warp's RMSE per channel (SlabErrorModel::preClassifiedRmse) along `directions`: the
+/// root of their mean square, of the rays through the box (scale by sqrt(coverage) for the
+/// image).
+double preClassifiedRmseAlong(SlabErrorModel& model, const ModelDirections& directions,
+                              int sliceStep);
+/// Whether every one of `directions` is cast (a prediction along them is cheap).
+bool directionsCast(const SlabErrorModel& model, const ModelDirections& directions);
 
 /// The chooser takes the model's prediction against this share of the target. DVR: 1, the
 /// prediction as it is. Over the volumes sweep's fixed settings it came out between 0.54 and 6.8

@@ -185,13 +185,9 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
     // within kInteractiveReuseDegrees: casting a direction costs 14-18 ms on the node suite's
     // volumes, the frame 20-40 ms. A drag meets new directions all the time; the still frame
     // after it casts its own.
-    if (frame.interactive) {
-        const glm::dvec3 d = quality.view.localDirection;
-        const bool wide = quality.view.coneTangent > 0.2;
-        const int cast = v.errorModel->castDirectionNear(d, wide, kInteractiveReuseDegrees);
-        if (cast >= 0 && cast != SlabErrorModel::nearestDirection(d, wide))
-            quality.view.localDirection = SlabErrorModel::directionVector(cast);
-    }
+    if (frame.interactive)
+        quality.view.directions =
+            castDirectionsNear(*v.errorModel, quality.view, kInteractiveReuseDegrees);
     quality.choice = chooseQuality(*v.errorModel, quality.view, request);
     if (region) agreeOnCostliest(quality.choice, quality.view, *v.errorModel, frame.partition);
     quality.predicted = true;

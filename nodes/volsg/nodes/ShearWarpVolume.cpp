@@ -43,9 +43,9 @@ SlabErrorModel& ShearWarpVolume::errorModel(const RayCastVolume& volume, std::ui
 const ShearWarpVolume::Quality& ShearWarpVolume::lastQuality() const {
     if (pendingPrediction_ && errorModel_) {
         const PendingPrediction p = *pendingPrediction_;
-        quality_.floorRmse = p.scale * errorModel_->preClassifiedRmse(p.direction, 1);
+        quality_.floorRmse = p.scale * preClassifiedRmseAlong(*errorModel_, p.directions, 1);
         quality_.predictedRmse =
-            p.scale * errorModel_->preClassifiedRmse(p.direction, quality_.sliceStep);
+            p.scale * preClassifiedRmseAlong(*errorModel_, p.directions, quality_.sliceStep);
         quality_.predicted = true;
     }
     pendingPrediction_.reset();

@@ -10,7 +10,7 @@
 #include <volsg/fields/Fields.h>
 #include <volsg/nodes/Group.h>
 #include <volsg/shearwarp/ShearWarpRenderer.h>
-#include <volsg/slicing/SlabErrorModel.h>
+#include <volsg/slicing/SlicingQuality.h>
 
 namespace volsg {
 
@@ -99,10 +99,10 @@ public:
     const Quality& lastQualityKnown() const { return quality_; }
     /// Whether the last frame's prediction waits for lastQuality().
     bool predictionPending() const { return pendingPrediction_.has_value(); }
-    /// A prediction left to the first lastQuality(): direction `direction` of this node's
-    /// error model (the one errorModel() gave the frame), the image RMSE `scale` times the rays'.
+    /// A prediction left to the first lastQuality(): along `directions` of this node's error
+    /// model (the one errorModel() gave the frame), the image RMSE `scale` times the rays'.
     struct PendingPrediction {
-        int direction = 0;
+        ModelDirections directions;
         double scale = 1.0;
     };
     void setLastQuality(const Quality& q, std::optional<PendingPrediction> pending = {}) {

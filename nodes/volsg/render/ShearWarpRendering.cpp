@@ -53,16 +53,19 @@ predictQuality(ShearWarpVolume& node, const State& state,
     const std::uint64_t key = std::uint64_t(reinterpret_cast<std::uintptr_t>(volume.data.get())) ^
                               (objects.front().tableKey * 0x9E3779B97F4A7C15ull);
     SlabErrorModel& model = node.errorModel(volume, key);
-    const QualityView qv =
+    QualityView qv =
         qualityViewOf(view.modelView, view.projection, volume.halfExtent(), model.L0());
-    const int dir = SlabErrorModel::nearestDirection(qv.localDirection);
+    // Along the view's nearest narrow directions (shear-warp's rays are parallel).
+    qv.directions = modelDirectionsOf(qv.localDirection, 0.0, VolumeRenderMode::DVR);
+    const ModelDirections dirs = qv.directions;
     const double scale = std::sqrt(std::clamp(qv.coverage, 0.0, 1.0));
     q.target = double(targetField) / 255.0;
     if (frame.interactive && node.interactiveSliceStep.isDefault()) {
-        int from = model.castDirectionNear(qv.localDirection, false, 180.0);
-        if (from < 0) from = dir; // the model's first direction: cast in this frame
+        // The view's directions cast already, else the nearest cast one (the model's first
+        // directions are cast in this frame).
+        const ModelDirections from = castDirectionsNear(model, qv, 180.0);
         const auto predicted = [&](int step) {
-            return scale * model.preClassifiedRmse(from, step);
+            return scale * preClassifiedRmseAlong(model, from, step);
         };
         int step = 1;
         for (const int s : {2, 3, 4, 6, 8, 12, 16}) {
@@ -73,13 +76,13 @@ predictQuality(ShearWarpVolume& node, const State& state,
             frame.interactivePlaneScale > 0.0 ? std::min(frame.interactivePlaneScale, 1.0) : 1.0;
         q.sliceStep = int(std::clamp(std::lround(step / viewer), 1L, 16L));
     }
-    if (!model.hasDirection(dir)) {
-        pending = ShearWarpVolume::PendingPrediction{dir, scale};
+    if (!directionsCast(model, dirs)) {
+        pending = ShearWarpVolume::PendingPrediction{dirs, scale};
         return q;
     }
     q.predicted = true;
-    q.floorRmse = scale * model.preClassifiedRmse(dir, 1);
-    q.predictedRmse = scale * model.preClassifiedRmse(dir, q.sliceStep);
+    q.floorRmse = scale * preClassifiedRmseAlong(model, dirs, 1);
+    q.predictedRmse = scale * preClassifiedRmseAlong(model, dirs, q.sliceStep);
     return q;
 }
 
