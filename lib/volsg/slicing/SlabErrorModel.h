@@ -9,12 +9,12 @@
 // features composed with the data's variation along the view, on the slab length, opacity
 // correction and the tables' quantisation. Rather than bounding that analytically (bounds on
 // spikes and steps are loose by orders of magnitude), the model evaluates it on a sample of
-// the volume's own rays: rays through the box around one of 96 directions, each
-// integrated twice on the CPU, once finely (linear v segments, exact tau and colour integrals:
-// the model) and once with the slicer's arithmetic (its planes, slabs, parts, opacity
-// correction, its 4096-entry transfer table and 256 x 256 pre-integration table, tag cells,
-// MIP's voxel-centre crossings and peak refinement). The per-ray RMSE scales to an image by
-// the share of pixels the box covers.
+// the volume's own rays: rays through the box around some of 96 directions (a view takes the
+// nearest three, SlicingQuality's modelDirectionsOf), each integrated twice on the CPU, once
+// finely (linear v segments, exact tau and colour integrals: the model) and once with the
+// slicer's arithmetic (its planes, slabs, parts, opacity correction, its 4096-entry transfer
+// table and 256 x 256 pre-integration table, tag cells, MIP's voxel-centre crossings and peak
+// refinement). The per-ray RMSE scales to an image by the share of pixels the box covers.
 
 #include <array>
 #include <cstdint>
