@@ -83,3 +83,23 @@ TEST_CASE_FIXTURE(GlFixture, "a 120 degree view from inside the volume matches t
     keepImages(c, "fov120-inside");
     checkSliced(c, 0.4, 1.5);
 }
+
+TEST_CASE_FIXTURE(GlFixture,
+                  "from inside the volume, a ray that leaves it before any plane is drawn") {
+    // One or two thick slabs: most rays of a wide view from inside leave the box through a
+    // side before they meet a plane, and only the near plane's cut through the box gives them
+    // a fragment (without it, regions of the image stayed empty: 42/255 on ErrorTargetTest's
+    // three spikes).
+    const RayCastVolume v = lumpyVolume();
+    auto camera = perspectiveAt({2, -1, 4}, kDegrees120, 0.3f, 100.0f);
+    for (const int planes : {1, 2})
+        for (const bool preIntegrated : {false, true}) {
+            SlicingSettings s;
+            s.numPlanes = planes;
+            s.samplesPerPlane = 256;
+            s.preIntegrated = preIntegrated;
+            s.fixedSamplesPerPlane = s.fixedPreIntegrated = true;
+            const Comparison c = compareGrid(renderer, v, s, *camera, 64);
+            checkSliced(c, 0.4, 1.5, preIntegrated ? "pre-integrated, " : "");
+        }
+}

@@ -193,6 +193,17 @@ void appendBoundingFaces(VolumeTextures& v, const Brick& b, const Brick& whole, 
         if (entering)
             ProxyPlaneCutter::appendPlanePolygon(b.boxMin, b.boxMax, n, plane.w, v.vertices);
     }
+    // The camera in the box: rays enter the volume at the near plane, so its cut through the
+    // brick is a face like the box's. Without it a ray that leaves the box before it meets a
+    // plane had no fragment (from inside, with a few planes, whole regions of the image
+    // stayed empty). A hair beyond the near plane, so that clipping keeps it.
+    if (local.clipDepth.x > local.boxDepth.x) {
+        const glm::dmat4& m = local.modelView;
+        const glm::dvec3 n(-m[0][2], -m[1][2], -m[2][2]); // eye depth = n . p - m[3][2]
+        const double depth =
+            local.clipDepth.x + 1e-5 * std::max(local.boxDepth.y - local.clipDepth.x, 0.0);
+        ProxyPlaneCutter::appendPlanePolygon(b.boxMin, b.boxMax, n, depth + m[3][2], v.vertices);
+    }
     s.faceCount = GLsizei(v.vertices.size()) - s.faceFirst;
 }
 
