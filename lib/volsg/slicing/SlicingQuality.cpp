@@ -71,14 +71,10 @@ SlabQuadrature quadratureFor(double samplesPerL0, int samples, bool preIntegrate
 ModelDirections modelDirectionsOf(const glm::dvec3& localDirection, double coneTangent,
                                   VolumeRenderMode mode) {
     ModelDirections out;
-    if (mode == VolumeRenderMode::MIP || mode == VolumeRenderMode::MINIP) {
-        out.dir[0] =
-            SlabErrorModel::nearestDirection(localDirection, coneTangent > kWideExtremeTangent);
-        out.count = 1;
-        return out;
-    }
-    if (coneTangent > kWideViewTangent) {
-        out.dir[0] = SlabErrorModel::nearestDirection(localDirection, true);
+    const bool extreme = mode == VolumeRenderMode::MIP || mode == VolumeRenderMode::MINIP;
+    if (extreme || coneTangent > kWideViewTangent) { // one direction, narrow or wide
+        out.dir[0] = SlabErrorModel::nearestDirection(
+            localDirection, coneTangent > (extreme ? kWideExtremeTangent : kWideViewTangent));
         out.count = 1;
         return out;
     }
