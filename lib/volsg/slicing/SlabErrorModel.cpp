@@ -11,6 +11,8 @@
 #include <tuple>
 
 #include <volsg/core/WorkerPool.h>
+#include <volsg/slicing/EmptyCells.h>
+#include <volsg/slicing/EmptyRuns.h>
 #include <volsg/slicing/ProxyPlaneCutter.h>
 
 namespace volsg {
@@ -172,6 +174,8 @@ struct ModelRay {
     /// layout with peaks and several samples a plane takes (found with the truth).
     Extreme crossing;
     bool hasCrossing = false;
+    /// DVR without tags: where the ray crosses only cells that cannot emit (EmptyRuns.h).
+    std::vector<glm::dvec2> emptyRuns;
     /// The layout's planes along this ray (depths become ray lengths).
     PlaneLayout along(const PlaneLayout& depthLayout) const {
         PlaneLayout l = depthLayout;
@@ -243,6 +247,9 @@ struct SlabErrorModel::Impl {
     /// feature is crossed in less (its linearised v must not misplace the feature).
     double truthStep = 0.25;
     VolumeRenderMode mode = VolumeRenderMode::DVR;
+    /// DVR without tags: the grid's cells classified with a pad that covers both tables'
+    /// filtering, so the rays skip what cannot emit (EmptyRuns.h); unmeasured otherwise.
+    EmptyCells cells;
     /// The rays' and the lattice's box (local coordinates): the volume's, or a region of it.
     glm::dvec3 regionMin{0.0}, regionMax{0.0};
     /// Integrates rays on every core: a new direction's rays are the model's main cost, and
@@ -278,6 +285,19 @@ struct SlabErrorModel::Impl {
                 pre(row);
                 built[row] = true;
             }
+    }
+
+    /// The empty cells of DVR without tags (once): a pad of one pre-integration entry and two
+    /// of its integration steps, which also covers the 4096-entry table's filter.
+    bool cellsClassified = false;
+    bool skipsEmptyCells = true;
+    void prepareEmptyCells() {
+        if (tagged || cellsClassified || !skipsEmptyCells) return;
+        cellsClassified = true;
+        if (!cells.measured()) cells.measure(*grid.grid, nullptr, grid.lowest, grid.highest);
+        cells.classify(table, false, false,
+                       1.0 / (PreIntegrationTable::kSize - 1) +
+                           2.0 / PreIntegrationTable::kIntegrationSteps);
     }
 
     int rowAt(const glm::dvec3& p) const {
@@ -333,8 +353,10 @@ struct SlabErrorModel::Impl {
     glm::dvec3 truthDvr(const ModelRay& ray);
     glm::dvec3 truthExtreme(const ModelRay& ray, const glm::dvec3& dir);
     /// The same with the data at a point from `dataAt` (GridCut: another grid per region).
+    /// `runs`: stretches of the ray to skip (null: none; another grid's data may emit there).
     template <class DataAt>
-    glm::dvec3 truthDvrOf(const ModelRay& ray, const DataAt& dataAt, double step);
+    glm::dvec3 truthDvrOf(const ModelRay& ray, const DataAt& dataAt, double step,
+                          const std::vector<glm::dvec2>* runs);
     template <class DataAt>
     glm::dvec3 truthExtremeOf(const ModelRay& ray, const glm::dvec3& dir, const DataAt& dataAt);
     /// The extreme of samples every L0 / 4 from end to end (the truth's besides the crossings).
@@ -448,10 +470,16 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
                                   kMinRaysAcross, int(scale * kMaxRaysAcross));
     s->rays = castRays(dirIndex, across);
     s->truth.resize(s->rays.size());
-    if (mode == VolumeRenderMode::DVR) preparePreTables();
+    if (mode == VolumeRenderMode::DVR) {
+        preparePreTables();
+        prepareEmptyCells();
+    }
+    const EmptyCellMap cellMap{grid.half, grid.spacing, grid.dims,
+                               cellsClassified && !tagged ? &cells : nullptr};
     forEachIndex(s->rays.size(), [&](std::size_t i) {
         ModelRay& ray = s->rays[i];
         if (mode == VolumeRenderMode::DVR) {
+            ray.emptyRuns = emptyRunsAlong(cellMap, ray.origin, ray.dir, ray.t0, ray.t1);
             s->truth[i] = truthDvr(ray);
             return;
         }
@@ -466,12 +494,13 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
 }
 
 glm::dvec3 SlabErrorModel::Impl::truthDvr(const ModelRay& ray) {
-    return grid.withData([&](const auto& at) { return truthDvrOf(ray, at, truthStep); });
+    return grid.withData(
+        [&](const auto& at) { return truthDvrOf(ray, at, truthStep, &ray.emptyRuns); });
 }
 
 template <class DataAt>
-glm::dvec3 SlabErrorModel::Impl::truthDvrOf(const ModelRay& ray, const DataAt& dataAt,
-                                            double step) {
+glm::dvec3 SlabErrorModel::Impl::truthDvrOf(const ModelRay& ray, const DataAt& dataAt, double step,
+                                            const std::vector<glm::dvec2>* runs) {
     // Segments of `step` (v linear along each: the trilinear field's curvature within one is
     // what this leaves out), integrated exactly through the segment table.
     const double len = ray.t1 - ray.t0;
@@ -480,7 +509,16 @@ glm::dvec3 SlabErrorModel::Impl::truthDvrOf(const ModelRay& ray, const DataAt& d
     Composite c;
     glm::dvec3 p = ray.origin + ray.t0 * ray.dir;
     double dPrev = dataAt(p);
+    EmptyRunCursor empty(runs);
     for (int i = 0; i < n && c.T > kStopTransmittance; ++i) {
+        if (const glm::dvec2* r = empty.covering(ray.t0 + i * h, ray.t0 + (i + 1) * h)) {
+            // Every segment up to the run's end adds nothing: on from its last point.
+            const int last = std::clamp(int(std::floor((r->y - ray.t0) / h)), i + 1, n);
+            p = ray.origin + (ray.t0 + last * h) * ray.dir;
+            dPrev = dataAt(p);
+            i = last - 1;
+            continue;
+        }
         const glm::dvec3 q = ray.origin + (ray.t0 + (i + 1) * h) * ray.dir;
         const double dNext = dataAt(q);
         const int row = rowAt(0.5 * (p + q));
@@ -621,6 +659,10 @@ void SlabErrorModel::Impl::partColour(const glm::dvec3& origin, const glm::dvec3
 glm::dvec3 SlabErrorModel::Impl::slicedDvr(const ModelRay& ray, const glm::dvec3& dir,
                                            const PlaneLayout& layout, const SlabQuadrature& q) {
     Composite c;
+    // A part in cells that cannot emit adds an optical depth of exactly 0: pre-integrated,
+    // its two ends' values lie in one transparent stretch of the table (the data is
+    // continuous along the run); otherwise its one sample does.
+    EmptyRunCursor empty(tagged ? nullptr : &ray.emptyRuns);
     forEachSlab(ray, layout, std::max(q.samplesPerPlane, 1), [&](const Slab& s) {
         if (c.T <= kStopTransmittance) return;
         const double part = (s.b - s.a) / s.parts;
@@ -628,6 +670,7 @@ glm::dvec3 SlabErrorModel::Impl::slicedDvr(const ModelRay& ray, const glm::dvec3
             const double a = s.a + j * part, b = a + part;
             // One part of a plane's slab is sampled at the plane; parts at their middles.
             const double at = s.parts == 1 && !s.face ? s.plane : 0.5 * (a + b);
+            if (q.preIntegrated ? empty.covering(a, b) : empty.covering(at, at)) continue;
             glm::dvec3 C;
             double D;
             partColour(ray.origin, dir, a, b, at, q.preIntegrated, C, D);
@@ -788,7 +831,7 @@ void measureFunction(const TransferTable& table, int row, SignalNeeds& needs) {
 } // namespace
 
 SlabErrorModel::SlabErrorModel(const RayCastVolume& volume, std::optional<ModelRegion> region,
-                               double opacityUnit)
+                               double opacityUnit, const EmptyCells* measuredCells)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     const VolumeGrid& g = *volume.data;
@@ -803,6 +846,8 @@ SlabErrorModel::SlabErrorModel(const RayCastVolume& volume, std::optional<ModelR
     tagged_ = m.tagged;
     m.L0 = L0_ = opacityUnit > 0.0 ? opacityUnit : g.smallestSpacing();
     m.mode = mode_ = volume.mode;
+    if (measuredCells && measuredCells->measured() && mode_ == VolumeRenderMode::DVR && !m.tagged)
+        m.cells = *measuredCells;
 
     for (int r = 0; r < m.table.rows(); ++r)
         measureFunction(m.table, r, needs_);
@@ -886,6 +931,10 @@ SlabErrorModel::nearestDirections(const glm::dvec3& localDirection) {
                 return std::find(out.begin(), out.begin() + k, i) == out.begin() + k;
             }).first;
     return out;
+}
+
+void SlabErrorModel::setSkipsEmptyCells(bool skips) {
+    impl_->skipsEmptyCells = skips;
 }
 
 void SlabErrorModel::setThreads(int threads) {
@@ -1054,7 +1103,8 @@ double SlabErrorModel::cutDifference(int dir, const GridCut& cut) {
             const ModelRay& ray = rays[crossing[j * stride]];
             const glm::dvec3 e =
                 mode_ == VolumeRenderMode::DVR
-                    ? m.truthDvrOf(ray, dataAt, cutStep) - m.truthDvrOf(ray, ownAt, cutStep)
+                    ? m.truthDvrOf(ray, dataAt, cutStep, nullptr) -
+                          m.truthDvrOf(ray, ownAt, cutStep, nullptr)
                     : m.truthExtremeOf(ray, ray.dir, dataAt) - m.truthExtreme(ray, ray.dir);
             squared[j] = glm::dot(e, e) / 3.0;
         });

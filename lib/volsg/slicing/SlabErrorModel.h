@@ -31,6 +31,8 @@
 
 namespace volsg {
 
+class EmptyCells;
+
 /// A slab quadrature as the slicer draws it, with lengths in the volume's L0.
 struct SlabQuadrature {
     double planeSpacingL0 = 0.5; ///< distance between planes along the view, in L0
@@ -85,13 +87,18 @@ public:
     /// data's needs are measured there; the planes stay laid over the whole box.
     /// `opacityUnit` (local units): the length the transfer functions' opacity is per, when
     /// not the grid's own L0 (a paged volume's stand-in: level 0's voxel).
+    /// `measuredCells`: the cells of volume.data as measured already (EmptyCells::measure), or
+    /// null to measure them when a DVR ray set first needs them.
     explicit SlabErrorModel(const RayCastVolume& volume, std::optional<ModelRegion> region = {},
-                            double opacityUnit = 0.0);
+                            double opacityUnit = 0.0, const EmptyCells* measuredCells = nullptr);
     ~SlabErrorModel();
 
     const SignalNeeds& needs() const { return needs_; }
     VolumeRenderMode mode() const { return mode_; }
     double L0() const { return L0_; }
+    /// Whether DVR rays skip the cells that cannot emit (default true; the same predictions
+    /// either way, EmptyRunsTest). Set before the first prediction.
+    void setSkipsEmptyCells(bool skips);
     /// Whether tagged transfer functions apply (the slicer's general, tag-cell path).
     bool tagged() const { return tagged_; }
 

@@ -158,8 +158,12 @@ SlicingSettings settingsForFrame(VolumeTextures& v, const RayCastVolume& volume,
     const std::optional<ModelRegion> region = ownPartRegion(volume, frame.partition);
     if (!v.errorModel || v.errorModelKey != volume.transferKey ||
         v.errorModelMode != int(volume.mode) || v.errorModelRegion != region.has_value()) {
+        // The model skips the cells that cannot emit (its own classification of the ranges).
+        const bool sameGrid = v.data.get() == volume.data.get();
+        if (sameGrid) measureCells(v);
         v.errorModel = std::make_unique<SlabErrorModel>(
-            volume, region, volume.paged ? volume.paged->finestSpacing() : 0.0);
+            volume, region, volume.paged ? volume.paged->finestSpacing() : 0.0,
+            sameGrid ? &v.cells : nullptr);
         v.errorModelKey = volume.transferKey;
         v.errorModelMode = int(volume.mode);
         v.errorModelRegion = region.has_value();

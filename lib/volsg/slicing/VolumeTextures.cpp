@@ -121,13 +121,16 @@ void prepareTable(VolumeTextures& v, const RayCastVolume& volume, std::uint64_t 
     ++v.totals.transferTableBuilds;
 }
 
+void measureCells(VolumeTextures& v) {
+    if (v.cells.measured()) return;
+    if (const GridMeasures* m = stagedMeasures(v); m && m->cells.measured())
+        v.cells = m->cells;
+    else
+        v.cells.measure(*v.data, v.tags.get(), v.finiteMin, v.finiteMax);
+}
+
 void prepareCells(VolumeTextures& v, int kind) {
-    if (!v.cells.measured()) {
-        if (const GridMeasures* m = stagedMeasures(v); m && m->cells.measured())
-            v.cells = m->cells;
-        else
-            v.cells.measure(*v.data, v.tags.get(), v.finiteMin, v.finiteMax);
-    }
+    measureCells(v);
     if (v.cellKind == kind && v.cellTableKey == v.tableKey) return;
     const bool tagged = v.tags && v.table.rows() > 1;
     // A pre-integrated lookup filters between entries 1 / (kSize - 1) apart in v, each the

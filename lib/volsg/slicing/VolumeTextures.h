@@ -144,6 +144,8 @@ void prepareTable(VolumeTextures& v, const RayCastVolume& volume, std::uint64_t 
 /// lookups read up to one of its entries beyond a value), measured on first use and uploaded
 /// when the table or the kind changes.
 void prepareCells(VolumeTextures& v, int kind);
+/// The cells' data ranges (once per grid; the staging thread's when it took them).
+void measureCells(VolumeTextures& v);
 void preparePreIntegration(VolumeTextures& v);
 /// Whether planeOpacity changes anything: m = 1 everywhere needs no lookup.
 bool planeOpacityMatters(const std::vector<PiecewiseLinear::Point>& points);
