@@ -127,16 +127,16 @@ TEST_CASE("a ray's empty runs lie where every sample is transparent") {
 TEST_CASE("skipping empty cells leaves the error model's predictions as they were") {
     // Sparse peaks in air and in a background at the spike's foot (many empty cells, and
     // some that only the pad keeps) and Marschner-Lobb under its rising ramp (dense, few
-    // empty cells), plain and pre-integrated, one to many samples per plane, narrow and wide
-    // ray sets.
+    // empty cells), plain and pre-integrated, one and many samples per plane, thin and thick
+    // slabs, a narrow and a wide ray set.
     RayCastVolume ball = volumeOf(sparsePeaks(), spikeFunction());
     RayCastVolume ml = marschnerLobbVolume();
     for (const RayCastVolume* v : {&ball, &ml}) {
         SlabErrorModel skipping(*v), whole(*v);
         whole.setSkipsEmptyCells(false);
-        for (const int dir : {5, 41, SlabErrorModel::kDirections + 12})
-            for (const double spacing : {0.5, 3.0, 40.0})
-                for (const int samples : {1, 4, 64})
+        for (const int dir : {5, SlabErrorModel::kDirections + 12})
+            for (const double spacing : {2.0, 40.0})
+                for (const int samples : {1, 16})
                     for (const bool pre : {false, true}) {
                         SlabQuadrature q;
                         q.planeSpacingL0 = spacing;
