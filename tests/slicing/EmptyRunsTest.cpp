@@ -89,8 +89,7 @@ TEST_CASE("a ray's empty runs lie where every sample is transparent") {
     table.build(volume.transferFunctions, {0.0, 65535.0});
     EmptyCells cells;
     cells.measure(*grid, nullptr, 0.0, 65535.0);
-    const double pad =
-        1.0 / (PreIntegrationTable::kSize - 1) + 2.0 / PreIntegrationTable::kIntegrationSteps;
+    const double pad = PreIntegrationTable::kLookupPadV;
     cells.classify(table, false, false, pad);
     const glm::dvec3 half = 0.5 * grid->extent();
     const EmptyCellMap map{half, grid->spacing(), grid->dimensions(), &cells};

@@ -48,10 +48,10 @@ std::vector<glm::dvec2> emptyRunsAlong(const EmptyCellMap& map, const glm::dvec3
         else
             runs.push_back({a, b});
     }
-    std::vector<glm::dvec2> shrunk;
-    for (const glm::dvec2& r : runs)
-        if (r.y - r.x > 2.0 * hair) shrunk.push_back({r.x + hair, r.y - hair});
-    return shrunk;
+    std::erase_if(runs, [&](const glm::dvec2& r) { return r.y - r.x <= 2.0 * hair; });
+    for (glm::dvec2& r : runs)
+        r += glm::dvec2(hair, -hair);
+    return runs;
 }
 
 } // namespace volsg

@@ -31,6 +31,11 @@ public:
     /// kSize x kSize * rows, 1 MB each); a volume with more tagged functions is not
     /// pre-integrated.
     static constexpr int kMaxRows = 64;
+    /// How far (in v) a lookup of a value reads around it: one table entry, whose integral is
+    /// of trapezoids kIntegrationSteps wide (two of them). Where the transfer function is
+    /// transparent that far either side of a value, every lookup of it has optical depth 0
+    /// (EmptyCells' pad for pre-integration; it covers the 4096-entry table's filter too).
+    static constexpr double kLookupPadV = 1.0 / (kSize - 1) + 2.0 / kIntegrationSteps;
 
     void build(const TransferFunction1D& function);
     /// kSize * kSize RGBA texels, row = v_back index, column = v_front index.

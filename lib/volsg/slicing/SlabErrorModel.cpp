@@ -287,17 +287,14 @@ struct SlabErrorModel::Impl {
             }
     }
 
-    /// The empty cells of DVR without tags (once): a pad of one pre-integration entry and two
-    /// of its integration steps, which also covers the 4096-entry table's filter.
+    /// The empty cells of DVR without tags (once), padded as both tables' lookups read.
     bool cellsClassified = false;
     bool skipsEmptyCells = true;
     void prepareEmptyCells() {
         if (tagged || cellsClassified || !skipsEmptyCells) return;
         cellsClassified = true;
         if (!cells.measured()) cells.measure(*grid.grid, nullptr, grid.lowest, grid.highest);
-        cells.classify(table, false, false,
-                       1.0 / (PreIntegrationTable::kSize - 1) +
-                           2.0 / PreIntegrationTable::kIntegrationSteps);
+        cells.classify(table, false, false, PreIntegrationTable::kLookupPadV);
     }
 
     int rowAt(const glm::dvec3& p) const {
@@ -475,7 +472,7 @@ RaySet& SlabErrorModel::Impl::raysAlong(int dirIndex) {
         prepareEmptyCells();
     }
     const EmptyCellMap cellMap{grid.half, grid.spacing, grid.dims,
-                               cellsClassified && !tagged ? &cells : nullptr};
+                               cellsClassified ? &cells : nullptr};
     forEachIndex(s->rays.size(), [&](std::size_t i) {
         ModelRay& ray = s->rays[i];
         if (mode == VolumeRenderMode::DVR) {
@@ -662,7 +659,7 @@ glm::dvec3 SlabErrorModel::Impl::slicedDvr(const ModelRay& ray, const glm::dvec3
     // A part in cells that cannot emit adds an optical depth of exactly 0: pre-integrated,
     // its two ends' values lie in one transparent stretch of the table (the data is
     // continuous along the run); otherwise its one sample does.
-    EmptyRunCursor empty(tagged ? nullptr : &ray.emptyRuns);
+    EmptyRunCursor empty(&ray.emptyRuns); // none with tags (prepareEmptyCells)
     forEachSlab(ray, layout, std::max(q.samplesPerPlane, 1), [&](const Slab& s) {
         if (c.T <= kStopTransmittance) return;
         const double part = (s.b - s.a) / s.parts;

@@ -133,12 +133,9 @@ void prepareCells(VolumeTextures& v, int kind) {
     measureCells(v);
     if (v.cellKind == kind && v.cellTableKey == v.tableKey) return;
     const bool tagged = v.tags && v.table.rows() > 1;
-    // A pre-integrated lookup filters between entries 1 / (kSize - 1) apart in v, each the
-    // integral of trapezoids 1 / kIntegrationSteps wide: padded by both, a cell that cannot
-    // emit gives every lookup of its values an optical depth of exactly 0.
-    const double padV = kind == 2 ? 1.0 / (PreIntegrationTable::kSize - 1) +
-                                        2.0 / PreIntegrationTable::kIntegrationSteps
-                                  : 0.0;
+    // Pre-integrated: padded as its lookups read, so a cell that cannot emit gives every
+    // lookup of its values an optical depth of exactly 0.
+    const double padV = kind == 2 ? PreIntegrationTable::kLookupPadV : 0.0;
     v.cells.classify(v.table, tagged, kind == 1, padV);
     if (!v.cellTexture) {
         v.cellTexture = Texture(GL_TEXTURE_3D);
