@@ -43,6 +43,7 @@ const char* usage =
     "usage: volsg-bench SCENE.iv [--frames N] [--size WxH] [--backend osmesa|egl]\n"
     "                   [--error [--error-frames K]] [--csv FILE] [--plot FILE.svg]\n"
     "                   [--interactive]   (the viewer's frames while the user drags)\n"
+    "                   [--per-frame]   (each view's ms and its volumes' settings)\n"
     "       volsg-bench --suite parse|traversal|all [--nodes N] [--side S] [--frames N]\n"
     "                   [--keep DIR]\n"
     "       volsg-bench --suite series [--size WxH] [--frames STEPS] [--volume-side N]\n"
@@ -143,6 +144,7 @@ struct Settings {
     std::vector<double> planes;
     std::vector<std::string> cases, kinds, models;
     bool planesOnly = false;
+    bool perFrame = false; ///< SCENE: print each view's time and volume settings
     bool readBack = false; ///< --suite coin: volsg's frame reads the image back
     int samplesPerPlane = 1;
     bool mipPeaks = true;
@@ -163,7 +165,8 @@ void printRow(const char* what, const bench::Samples& s, const char* unit = "ms/
 /// Times the orbit views; keeps the images of the views listed in views.errorIndices.
 bench::Samples orbitFrames(Renderer& renderer, Node& root, const RenderOptions& base,
                            const bench::OrbitViews& views, std::vector<Image>* kept = nullptr,
-                           std::vector<std::vector<double>>* predicted = nullptr) {
+                           std::vector<std::vector<double>>* predicted = nullptr,
+                           bool perFrame = false) {
     RenderOptions options = base;
     options.camera = views.cameras[0];
     renderer.render(root, options); // warm-up: shader compiles and uploads are not frames
@@ -173,6 +176,9 @@ bench::Samples orbitFrames(Renderer& renderer, Node& root, const RenderOptions& 
         options.camera = views.cameras[i];
         Image image;
         samples.ms.push_back(bench::timeMs([&] { image = renderer.render(root, options); }));
+        if (perFrame) // what each view drew (no prediction cast for it: later frames unchanged)
+            for (const std::string& line : cli::volumeQualityLines(root, false))
+                std::printf("  view %zu: %.1f ms, %s\n", i, samples.ms.back(), line.c_str());
         if (kept && next < views.errorIndices.size() && views.errorIndices[next] == int(i)) {
             kept->push_back(std::move(image));
             if (predicted) predicted->push_back(cli::predictedErrors(root));
@@ -246,7 +252,7 @@ int sceneBenchmark(const Settings& st) {
     std::vector<Image> images;
     std::vector<std::vector<double>> predicted; // per error view, per volume node
     const bench::Samples samples =
-        orbitFrames(renderer, *root, st.options, views, &images, &predicted);
+        orbitFrames(renderer, *root, st.options, views, &images, &predicted, st.perFrame);
     char what[160];
     std::snprintf(what, sizeof what, "%s %dx%d %s%s", st.scene.c_str(), st.options.width,
                   st.options.height, st.backend == Backend::EGL ? "egl" : "osmesa",
@@ -438,6 +444,7 @@ int run(cli::Arguments& args) {
         .size("--size", st.options.width, st.options.height, &st.sizeGiven)
         .flag("--error", st.error)
         .flag("--interactive", st.options.interactive)
+        .flag("--per-frame", st.perFrame)
         .integer("--error-frames", st.errorFrames, 1, 100000, &st.errorFramesGiven)
         .value("--tolerance", [&](const std::string& v) { st.tolerance = parseTolerance(v); })
         .value("--planes",

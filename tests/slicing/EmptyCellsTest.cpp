@@ -8,6 +8,7 @@
 #include <limits>
 
 #include <volsg/slicing/EmptyCells.h>
+#include <volsg/slicing/SlicePlan.h>
 #include <volsg/slicing/TransferTable.h>
 
 using namespace volsg;
@@ -204,7 +205,9 @@ TEST_CASE("skipping empty cells changes no image and matches the reference") {
                 << "/255; vs reference rmse " << pair.skipping.difference.rmse / k8Bit << "/255");
         CHECK(pair.skipping.stats.emptyCells > 0.5);
         CHECK(pair.plain.stats.emptyCells == 0.0);
-        CHECK(pair.skipping.stats.cellRows > 0); // the geometry left the air out
+        // The geometry left the air out, where a fragment takes few samples (kMaxRowSamples);
+        // a slab of more trims its own ends.
+        CHECK((pair.skipping.stats.cellRows > 0) == (c.samples <= slicing::kMaxRowSamples));
         CHECK(pair.plain.stats.cellRows == 0);
         // Exact up to the transfer table's linear filter next to the first visible entry.
         CHECK(skipped.max < 0.01 * k8Bit);

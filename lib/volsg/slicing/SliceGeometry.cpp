@@ -286,7 +286,8 @@ std::vector<glm::dvec4> localClipPlanes(const RayCastVolume& volume) {
 
 RowPlan planRows(VolumeTextures& v, const SlicePlan& plan, const SlicingSettings& settings) {
     RowPlan rows;
-    if (plan.method.skipCells && settings.skipEmptyCells) {
+    if (plan.method.skipCells && settings.skipEmptyCells &&
+        plan.method.slabSamples <= kMaxRowSamples) {
         rows.reach = rowReachOf(plan, settings.mipPeaks);
         if (rows.reach >= 0 && (v.rowsReach != rows.reach || v.rowsKind != v.cellKind ||
                                 v.rowsTableKey != v.cellTableKey)) {

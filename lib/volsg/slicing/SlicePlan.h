@@ -40,6 +40,16 @@ struct LocalView {
     bool orthographic = false;
 };
 
+/// The most samples a fragment takes for which its plane is cut into rows. Rows leave out the
+/// fragments of empty cells, but they cut each plane into many small polygons, and llvmpipe
+/// shades a partly covered 4x4 block whole: that waste grows with a fragment's samples, while a
+/// slab of several samples trims its own empty ends (the lean loop's cell walks). Chest CT,
+/// 512 x 512, DVR, the sum of 8 orbit views' frames, rows against none: 60 x 1 820 against 983
+/// ms, 100 x 2 1303 against 1377, 40 x 8 902 against 895, 80 x 4 1401 against 1365, 20 x 16
+/// 968 against 774, 10 x 32 995 against 672; lit 5 x 64 6160 against 4386; MIP with peaks, 5 x
+/// 32, up to 199 against 74 ms a view (lib/volsg/slicing/README.md, session 20).
+constexpr int kMaxRowSamples = 2;
+
 /// How the bricks are cut into rows of empty-space cells (CellRows).
 struct RowPlan {
     int reach = -1; ///< how far (cells) a fragment's samples reach; -1: whole bricks, no rows
