@@ -37,7 +37,8 @@ struct NodeCase {
     const char* file;
 };
 constexpr NodeCase kCases[] = {{"ml256", "node-marschner-lobb-256.iv"},
-                               {"chest-ct", "node-chest-ct.iv"}};
+                               {"chest-ct", "node-chest-ct.iv"},
+                               {"head-ct", "node-head-ct.iv"}};
 
 double medianOf(std::vector<double> v) {
     Samples s;
