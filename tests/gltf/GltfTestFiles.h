@@ -10,20 +10,17 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h> // getpid: ctest runs test cases as parallel processes
-
 #include <glm/glm.hpp>
 
 #include "../../examples/gltf/ExampleMesh.h" // packGlb
+
+#include "../support/TempDir.h"
 
 namespace volsg::test {
 
 /// A folder of this process for scratch files (ctest runs cases in parallel).
 inline std::filesystem::path gltfScratch() {
-    const auto dir =
-        std::filesystem::temp_directory_path() / ("volsg-gltf-test-" + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    return dir;
+    return processScratch("volsg-gltf-test");
 }
 
 inline std::string base64(const std::vector<std::uint8_t>& bytes) {

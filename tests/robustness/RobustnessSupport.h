@@ -14,6 +14,8 @@
 #include <volsg/nodes/GltfModel.h>
 #include <volsg/volumeio/VolumeReader.h>
 
+#include "../support/TempDir.h"
+
 namespace volsg::test {
 
 /// Reads `path` with the reader its extension names (.iv scene, .nrrd/.nhdr, .mha/.mhd, .gltf/
@@ -56,8 +58,7 @@ inline std::string loadError(const std::filesystem::path& path) {
 /// A fresh folder of this process under the build's temporary directory (ctest runs test
 /// cases in parallel processes).
 inline std::filesystem::path robustnessScratch(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                      ("volsg-robustness-" + std::to_string(::getpid())) / name;
+    const std::filesystem::path dir = processScratch("volsg-robustness") / name;
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -3,6 +3,8 @@
 
 #include <atomic>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <string>
 #include <system_error>
 
@@ -34,5 +36,15 @@ public:
 private:
     std::filesystem::path path_;
 };
+
+/// A folder this process's test cases share (ctest may run a source's cases in one process),
+/// made on first use and removed when the process exits.
+inline std::filesystem::path processScratch(const std::string& prefix) {
+    static std::map<std::string, std::unique_ptr<TempDir>> folders; // destroyed at exit
+    std::unique_ptr<TempDir>& folder = folders[prefix];
+    if (!folder) folder = std::make_unique<TempDir>(prefix);
+    std::filesystem::create_directories(folder->path()); // (a case may have removed it)
+    return folder->path();
+}
 
 } // namespace volsg::test

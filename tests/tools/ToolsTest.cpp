@@ -1,8 +1,6 @@
 // The command-line tools and the embedding example, run as a user runs them.
 #include <doctest/doctest.h>
 
-#include <unistd.h> // getpid: ctest runs test cases as parallel processes
-
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -15,6 +13,8 @@
 
 #include <volsg/image/Image.h>
 
+#include "../support/TempDir.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -26,8 +26,7 @@ struct Run {
 
 // Runs a shell command with stderr captured; the exit status as the shell reports it.
 Run run(const std::string& command) {
-    const fs::path errFile =
-        fs::temp_directory_path() / ("volsg-tools-test-" + std::to_string(getpid()) + ".err");
+    const fs::path errFile = volsg::test::processScratch("volsg-tools-test") / "command.err";
     const int raw = std::system((command + " 2>" + errFile.string()).c_str());
     std::ifstream in(errFile);
     std::stringstream ss;
@@ -42,10 +41,7 @@ std::string example(const char* name) {
     return std::string(VOLSG_SOURCE_DIR) + "/examples/" + name;
 }
 fs::path scratch(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("volsg-tools-test-" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    return dir / name;
+    return volsg::test::processScratch("volsg-tools-test") / name;
 }
 
 } // namespace

@@ -2,8 +2,6 @@
 // and renderReference() composites the reference ray caster over GL's opaque geometry.
 #include <doctest/doctest.h>
 
-#include <unistd.h> // getpid: ctest runs test cases as parallel processes
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -18,6 +16,8 @@
 #include <volsg/image/Image.h>
 #include <volsg/io/SceneReader.h>
 #include <volsg/volumescene/ReferenceScene.h>
+
+#include "../support/TempDir.h"
 
 using namespace volsg;
 
@@ -244,9 +244,8 @@ TEST_CASE("the reference converts a perspective depth buffer to the right ray di
 
 TEST_CASE("volsg-render --reference writes a PFM of the reference image") {
     namespace fs = std::filesystem;
-    const fs::path dir =
-        fs::temp_directory_path() / ("volsg-reference-scene-test-" + std::to_string(getpid()));
-    fs::create_directories(dir);
+    const test::TempDir scratch("volsg-reference-scene-test");
+    const fs::path& dir = scratch.path();
     const fs::path sceneFile = dir / "cube-in-volume.iv", out = dir / "reference.pfm",
                    log = dir / "reference.out";
     std::ofstream(sceneFile) << "#Inventor V2.1 ascii\nSeparator {\n"

@@ -1,8 +1,6 @@
 // volsg-bench's speed-versus-error output and the volume examples, run as a user runs them.
 #include <doctest/doctest.h>
 
-#include <unistd.h> // getpid: ctest runs test cases as parallel processes
-
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -18,15 +16,14 @@
 #include <volsg/io/SceneReader.h>
 #include <volsg/volumescene/ReferenceScene.h>
 
+#include "../support/TempDir.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 fs::path scratch(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("volsg-volume-bench-test-" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    return dir / name;
+    return volsg::test::processScratch("volsg-volume-bench-test") / name;
 }
 
 // Runs a command with stdout and stderr captured in one file; the exit status.

@@ -1,8 +1,6 @@
 // VolumeData, TransferFunction and BoxClip: read from scene text, generated grids, lazy reload.
 #include <doctest/doctest.h>
 
-#include <unistd.h> // getpid: ctest runs test cases as parallel processes
-
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -20,6 +18,8 @@
 #include <volsg/volume/TransferFunction1D.h>
 #include <volsg/volume/VolumeGrid.h>
 
+#include "../support/TempDir.h"
+
 using namespace volsg;
 
 namespace {
@@ -36,10 +36,7 @@ template <class T> ref_ptr<T> readOne(const std::string& body) {
 }
 
 std::filesystem::path scratchDir() {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("volsg-volume-nodes-test-" + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    return dir;
+    return test::processScratch("volsg-volume-nodes-test");
 }
 
 void writeBytes(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
