@@ -32,8 +32,9 @@ PlaneLayout planeLayout(const LocalView& local, const SlicingSettings& settings,
 /// The volume's clip planes in its local coordinates; throws Error beyond kMaxClipPlanes.
 std::vector<glm::dvec4> localClipPlanes(const RayCastVolume& volume);
 
-/// The rows of empty-space cells the bricks are cut into (none when cells are not skipped, or
-/// a slab reaches too far), with the cell flags dilated for them.
+/// The rows of empty-space cells the bricks are cut into (none when cells are not skipped, a
+/// fragment takes more than kMaxRowSamples samples, or a slab reaches too far), with the cell
+/// flags dilated for them.
 RowPlan planRows(VolumeTextures& v, const SlicePlan& plan, const SlicingSettings& settings);
 
 /// Orders the bricks back to front and cuts those that can contribute into v.vertices: their
